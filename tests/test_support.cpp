@@ -1,0 +1,78 @@
+// Shared test helpers (see test_support.hpp).
+#include "test_support.hpp"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace partet::test {
+
+std::string data_path(const std::string& name) { return std::string(PARTET_DATA_DIR) + "/" + name; }
+
+std::string scratch_dir(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("partet_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+RunResult run_partet(const std::string& args) {
+  RunResult r;
+  std::string cmd = std::string(PARTET_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+  int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+SurfaceMesh box_surface(double a, double b, double c) {
+  SurfaceMesh s;
+  for (int i = 0; i < 8; ++i) {
+    s.xyz.push_back((i & 1) ? a : 0);
+    s.xyz.push_back((i & 2) ? b : 0);
+    s.xyz.push_back((i & 4) ? c : 0);
+  }
+  // Outward, counterclockwise seen from outside.
+  s.tris = {0, 2, 1, 1, 2, 3,   // z = 0
+            4, 5, 6, 5, 7, 6,   // z = c
+            0, 1, 4, 1, 5, 4,   // y = 0
+            2, 6, 3, 3, 6, 7,   // y = b
+            0, 4, 2, 2, 4, 6,   // x = 0
+            1, 3, 5, 3, 7, 5};  // x = a
+  return s;
+}
+
+TetMesh cube_tets() {
+  TetMesh m;
+  SurfaceMesh box = box_surface();
+  m.xyz = box.xyz;
+  m.tris = box.tris;
+  // Kuhn triangulation: the 6 paths 0 -> 7 through the cube's vertices.
+  m.tets = {0, 1, 3, 7, 0, 3, 2, 7, 0, 2, 6, 7, 0, 6, 4, 7, 0, 4, 5, 7, 0, 5, 1, 7};
+  return m;
+}
+
+}  // namespace partet::test

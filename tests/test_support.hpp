@@ -1,0 +1,35 @@
+// Shared test helpers: paths to bundled data, scratch directories, running
+// the partet binary, and small generated shapes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/tet_mesh.hpp"
+#include "surface/surface_mesh.hpp"
+
+namespace partet::test {
+
+// Path of a file in the project's data/ folder.
+std::string data_path(const std::string& name);
+
+// A fresh empty directory for one test (removed and recreated).
+std::string scratch_dir(const std::string& name);
+
+std::string read_text(const std::string& path);
+void write_text(const std::string& path, const std::string& text);
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+// Runs the partet binary with `args` (a shell-quoted string).
+RunResult run_partet(const std::string& args);
+
+// An axis-aligned box [0,a]x[0,b]x[0,c] as 12 outward triangles.
+SurfaceMesh box_surface(double a = 1, double b = 1, double c = 1);
+// The unit cube [0,1]^3 split into 6 positive tets around the 0-7 diagonal,
+// with its 12 boundary triangles.
+TetMesh cube_tets();
+
+}  // namespace partet::test
