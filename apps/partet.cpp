@@ -1,3 +1,83 @@
-// partet command line (being built up; see README).
+// partet command line: `partet INPUT -o OUTPUT [options]` meshes a closed
+// surface; `partet check MESH [--surface S] [--json]` validates a mesh.
+// Runs as one rank without a launcher, or under `mpirun -np N`.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-int main() { std::puts("partet " PARTET_VERSION); return 0; }
+#include <cstring>
+#include <string>
+
+#include "check/check_command.hpp"
+#include "core/error.hpp"
+#include "core/log.hpp"
+#include "parallel/comm.hpp"
+#include "pipeline/mesh_command.hpp"
+
+namespace {
+
+const char* kFooter =
+    "Surfaces: .stl (ASCII, binary) .off .obj .ply (ASCII, binary) .mesh (Medit) .msh (Gmsh 4.1)\n"
+    "Volume meshes: .mesh .msh (binary unless --ascii) .vtu, and .pvtu (one .vtu piece per rank)\n"
+    "Exit codes: 0 done, 2 bad input, 3 meshing could not finish, 4 internal error.\n"
+    "Run on N ranks with: mpirun -np N partet INPUT -o OUTPUT";
+
+int mesh_main(int argc, char** argv, const partet::Comm& comm) {
+  partet::MeshOptions o;
+  CLI::App app{"partet: parallel tetrahedral mesh generator (octree, templates, advancing front)", "partet"};
+  app.set_version_flag("--version", std::string("partet ") + PARTET_VERSION);
+  app.footer(std::string(kFooter) + "\nValidate a mesh with: partet check MESH [--surface SURFACE] [--json]");
+  app.add_option("input", o.input, "Closed triangulated surface to mesh")->required();
+  app.add_option("-o,--output", o.output, "Volume mesh to write; the format follows the extension")->required();
+  app.add_option("--report", o.report, "Write a JSON report of the run (steps, times per rank, counts, memory)");
+  app.add_flag("--ascii", o.ascii, "Write Gmsh .msh as text instead of binary");
+  app.add_flag("-q,--quiet", o.quiet, "Print errors only");
+  app.add_flag("-v,--verbose", o.verbose, "Every rank prints its progress, not only rank 0");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (comm.rank() != 0) return e.get_exit_code() == 0 ? 0 : partet::kExitInput;
+    int code = app.exit(e);
+    return code == 0 ? 0 : partet::kExitInput;
+  }
+  partet::Log log(comm.rank(), o.quiet, o.verbose);
+  return partet::run_mesh(o, comm, log);
+}
+
+int check_main(int argc, char** argv, const partet::Comm& comm) {
+  partet::CheckOptions o;
+  CLI::App app{"partet check: validate a tetrahedral mesh and measure its quality", "partet check"};
+  app.footer(
+      "Valid: every tet positively oriented (exact), every face shared by at most two tets lying on opposite\n"
+      "sides; with --surface, the boundary faces are exactly the surface's triangles and the volume matches.\n"
+      "Reads .mesh .msh .vtu .pvtu. Exit codes: 0 valid, 1 invalid, 2 unreadable.");
+  app.add_option("mesh", o.mesh, "Volume mesh to check")->required();
+  app.add_option("--surface", o.surface, "Surface the mesh must be bounded by exactly");
+  app.add_flag("--json", o.json, "Print the result as JSON");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (comm.rank() != 0) return e.get_exit_code() == 0 ? 0 : partet::kExitInput;
+    int code = app.exit(e);
+    return code == 0 ? 0 : partet::kExitInput;
+  }
+  if (comm.rank() != 0) return 0;
+  return partet::run_check(o);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  partet::MpiSession mpi(&argc, &argv);
+  partet::Comm comm = partet::Comm::world();
+  try {
+    if (argc > 1 && std::strcmp(argv[1], "check") == 0) return check_main(argc - 1, argv + 1, comm);
+    return mesh_main(argc, argv, comm);
+  } catch (const partet::Error& e) {
+    // Errors from collective steps are the same on every rank: rank 0 tells.
+    if (comm.rank() == 0) std::fprintf(stderr, "partet: error: %s\n", e.what());
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "partet: internal error on rank %d: %s\n", comm.rank(), e.what());
+    if (comm.size() > 1) comm.abort(partet::kExitInternal);
+    return partet::kExitInternal;
+  }
+}

@@ -55,13 +55,14 @@ SurfaceMesh box_surface(double a, double b, double c) {
     s.xyz.push_back((i & 2) ? b : 0);
     s.xyz.push_back((i & 4) ? c : 0);
   }
-  // Outward, counterclockwise seen from outside.
-  s.tris = {0, 2, 1, 1, 2, 3,   // z = 0
-            4, 5, 6, 5, 7, 6,   // z = c
-            0, 1, 4, 1, 5, 4,   // y = 0
-            2, 6, 3, 3, 6, 7,   // y = b
-            0, 4, 2, 2, 4, 6,   // x = 0
-            1, 3, 5, 3, 7, 5};  // x = a
+  // Outward (counterclockwise seen from outside); each face is split by the
+  // diagonal through corner 0 or corner 7, as cube_tets() splits it.
+  s.tris = {0, 3, 1, 0, 2, 3,   // z = 0
+            4, 5, 7, 4, 7, 6,   // z = c
+            0, 1, 5, 0, 5, 4,   // y = 0
+            2, 7, 3, 2, 6, 7,   // y = b
+            0, 6, 2, 0, 4, 6,   // x = 0
+            1, 3, 7, 1, 7, 5};  // x = a
   return s;
 }
 

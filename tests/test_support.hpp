@@ -26,10 +26,11 @@ struct RunResult {
 // Runs the partet binary with `args` (a shell-quoted string).
 RunResult run_partet(const std::string& args);
 
-// An axis-aligned box [0,a]x[0,b]x[0,c] as 12 outward triangles.
+// An axis-aligned box [0,a]x[0,b]x[0,c] as 12 outward triangles; vertex i
+// is (a if i&1, b if i&2, c if i&4).
 SurfaceMesh box_surface(double a = 1, double b = 1, double c = 1);
 // The unit cube [0,1]^3 split into 6 positive tets around the 0-7 diagonal,
-// with its 12 boundary triangles.
+// with its 12 boundary triangles (those of box_surface()).
 TetMesh cube_tets();
 
 }  // namespace partet::test

@@ -9,6 +9,36 @@ namespace partet {
 
 namespace {
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
+
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The power of ten of the leading nonzero digit of a decimal number that
+// from_chars found out of range (so nonzero and finite): positive when it
+// overflows, negative when it underflows, whatever mantissa and exponent say
+// separately ("1000...0e-5" overflows, "0.000...01e5" underflows).
+int64_t decimal_order(std::string_view s) {
+  size_t i = s.front() == '-' ? 1 : 0;
+  int64_t order = 0;
+  bool found = false;
+  for (; i < s.size() && is_digit(s[i]); ++i) {
+    if (found) ++order;
+    found = found || s[i] != '0';
+  }
+  if (i < s.size() && s[i] == '.') {
+    for (++i; i < s.size() && is_digit(s[i]); ++i) {
+      if (!found) --order;
+      found = found || s[i] != '0';
+    }
+  }
+  int64_t exponent = 0;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    bool negative = ++i < s.size() && s[i] == '-';
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+    for (; i < s.size() && is_digit(s[i]) && exponent < 1000000000; ++i) exponent = 10 * exponent + (s[i] - '0');
+    if (negative) exponent = -exponent;
+  }
+  return order + exponent;
+}
 }  // namespace
 
 TextCursor::TextCursor(std::string_view text, std::string file, char comment)
@@ -109,23 +139,26 @@ size_t split_tokens(std::string_view s, std::string_view* out, size_t max) {
 }
 
 bool parse_real(std::string_view s, double& out) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (!s.empty() && s.front() == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && s.front() == '-') return false;
+  }
   if (s.empty()) return false;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   if (ec == std::errc::result_out_of_range) {
     // Overflow reads as infinity, underflow as zero: the value is still a number.
     bool neg = s.front() == '-';
-    out = 0.0;
-    size_t e = s.find_first_of("eE");
-    if (e != std::string_view::npos && e + 1 < s.size() && s[e + 1] != '-')
-      out = neg ? -__builtin_inf() : __builtin_inf();
+    out = decimal_order(s) > 0 ? (neg ? -__builtin_inf() : __builtin_inf()) : (neg ? -0.0 : 0.0);
     return ptr == s.data() + s.size();
   }
   return ec == std::errc() && ptr == s.data() + s.size();
 }
 
 bool parse_integer(std::string_view s, int64_t& out) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (!s.empty() && s.front() == '+') {
+    s.remove_prefix(1);
+    if (!s.empty() && s.front() == '-') return false;
+  }
   if (s.empty()) return false;
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && ptr == s.data() + s.size();

@@ -1,0 +1,150 @@
+// The partet command line end to end: exit codes, messages, the report,
+// and `partet check` on written meshes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "io/mesh_file.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+using test::data_path;
+using test::run_partet;
+using test::scratch_dir;
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+TEST(Cli, VersionAndHelp) {
+  auto v = run_partet("--version");
+  EXPECT_EQ(v.exit_code, 0);
+  EXPECT_TRUE(contains(v.output, "partet " PARTET_VERSION)) << v.output;
+  auto h = run_partet("--help");
+  EXPECT_EQ(h.exit_code, 0);
+  for (const char* opt : {"--output", "--report", "--ascii", "--quiet", "--verbose", "check", "mpirun"})
+    EXPECT_TRUE(contains(h.output, opt)) << opt;
+  auto ch = run_partet("check --help");
+  EXPECT_EQ(ch.exit_code, 0);
+  EXPECT_TRUE(contains(ch.output, "--surface"));
+  EXPECT_TRUE(contains(ch.output, "--json"));
+}
+
+TEST(Cli, MissingArgumentsAreInputErrors) {
+  EXPECT_EQ(run_partet("").exit_code, 2);
+  EXPECT_EQ(run_partet(data_path("good/cube.off")).exit_code, 2);
+  EXPECT_EQ(run_partet("--no-such-option").exit_code, 2);
+}
+
+TEST(Cli, GoodSurfaceIsDiagnosedThenStopsBeforeVolumeMeshing) {
+  std::string dir = scratch_dir("cli_good");
+  auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/cube.vtu");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(contains(r.output, "read surface")) << r.output;
+  EXPECT_TRUE(contains(r.output, "12 triangles")) << r.output;
+  EXPECT_TRUE(contains(r.output, "volume meshing is not available")) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/cube.vtu"));
+}
+
+TEST(Cli, FixableSurfaceGetsANote) {
+  std::string dir = scratch_dir("cli_fixable");
+  auto r = run_partet(data_path("fixable/tet-shuffled.off") + " -o " + dir + "/t.mesh");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(contains(r.output, "note: tet-shuffled.off: reoriented")) << r.output;
+}
+
+TEST(Cli, BadSurfacesExitWithTwoAndWriteNothing) {
+  std::string dir = scratch_dir("cli_bad");
+  for (const char* name : {"bad/holes.off", "bad/cow.off", "bad/cube_quad.off", "bad/object.stl"}) {
+    auto r = run_partet(data_path(name) + " -o " + dir + "/out.vtu --report " + dir + "/r.json");
+    EXPECT_EQ(r.exit_code, 2) << name << "\n" << r.output;
+    EXPECT_TRUE(contains(r.output, "partet: error: " + data_path(name))) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out.vtu"));
+    auto report = nlohmann::json::parse(test::read_text(dir + "/r.json"));
+    EXPECT_EQ(report["exit_code"], 2);
+  }
+}
+
+TEST(Cli, UnreadableInputsAndUnknownFormats) {
+  std::string dir = scratch_dir("cli_unreadable");
+  auto missing = run_partet(dir + "/none.stl -o " + dir + "/o.vtu");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_TRUE(contains(missing.output, "cannot open")) << missing.output;
+  test::write_text(dir + "/empty.off", "");
+  auto empty = run_partet(dir + "/empty.off -o " + dir + "/o.vtu");
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_TRUE(contains(empty.output, "empty file")) << empty.output;
+  auto bad_out = run_partet(data_path("good/cube.off") + " -o " + dir + "/o.xyz");
+  EXPECT_EQ(bad_out.exit_code, 2);
+  EXPECT_TRUE(contains(bad_out.output, "unknown output format")) << bad_out.output;
+  auto bad_in = run_partet(dir + "/in.step -o " + dir + "/o.vtu");
+  EXPECT_EQ(bad_in.exit_code, 2);
+  EXPECT_TRUE(contains(bad_in.output, "unknown input surface format")) << bad_in.output;
+}
+
+TEST(Cli, QuietPrintsOnlyErrors) {
+  std::string dir = scratch_dir("cli_quiet");
+  auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/c.vtu --quiet");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_FALSE(contains(r.output, "read surface")) << r.output;
+  EXPECT_TRUE(contains(r.output, "partet: error:")) << r.output;
+}
+
+TEST(Cli, ReportHasStepsTimesPerRankAndMemory) {
+  std::string dir = scratch_dir("cli_report");
+  auto r = run_partet(data_path("good/lever.stl") + " -o " + dir + "/l.msh --report " + dir + "/r.json");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  auto j = nlohmann::json::parse(test::read_text(dir + "/r.json"));
+  EXPECT_EQ(j["ranks"], 1);
+  EXPECT_EQ(j["input"], data_path("good/lever.stl"));
+  EXPECT_EQ(j["exit_code"], 3);
+  ASSERT_GE(j["steps"].size(), 3u);
+  EXPECT_EQ(j["steps"][1]["name"], "read surface");
+  EXPECT_EQ(j["steps"][1]["wall_s"].size(), 1u);
+  EXPECT_EQ(j["steps"][1]["cpu_s"].size(), 1u);
+  EXPECT_GT(j["steps"][1]["counts"]["triangles"].get<int>(), 0);
+  EXPECT_EQ(j["surface"]["shells"], 1);
+  EXPECT_GT(j["peak_rss_mib"][0].get<double>(), 0.0);
+}
+
+TEST(Cli, CheckValidInvalidAndUnreadable) {
+  std::string dir = scratch_dir("cli_check");
+  TetMesh cube = test::cube_tets();
+  write_volume_file(cube, dir + "/cube.vtu", {});
+  SurfaceMesh box = test::box_surface();
+  std::string off = "OFF\n8 12 0\n";
+  for (size_t v = 0; v < 8; ++v)
+    off += std::to_string(box.xyz[3 * v]) + " " + std::to_string(box.xyz[3 * v + 1]) + " " +
+           std::to_string(box.xyz[3 * v + 2]) + "\n";
+  for (size_t t = 0; t < 12; ++t)
+    off += "3 " + std::to_string(box.tris[3 * t]) + " " + std::to_string(box.tris[3 * t + 1]) + " " +
+           std::to_string(box.tris[3 * t + 2]) + "\n";
+  test::write_text(dir + "/box.off", off);
+
+  auto ok = run_partet("check " + dir + "/cube.vtu --surface " + dir + "/box.off");
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  auto js = run_partet("check " + dir + "/cube.vtu --json");
+  EXPECT_EQ(js.exit_code, 0) << js.output;
+  auto j = nlohmann::json::parse(js.output);
+  EXPECT_EQ(j["valid"], true);
+
+  TetMesh flipped = cube;
+  std::swap(flipped.tets[0], flipped.tets[1]);
+  write_volume_file(flipped, dir + "/flipped.mesh", {});
+  auto bad = run_partet("check " + dir + "/flipped.mesh");
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+
+  TetMesh missing = cube;
+  missing.tets.resize(missing.tets.size() - 4);
+  write_volume_file(missing, dir + "/missing.msh", {});
+  auto hole = run_partet("check " + dir + "/missing.msh --surface " + dir + "/box.off");
+  EXPECT_EQ(hole.exit_code, 1) << hole.output;
+
+  test::write_text(dir + "/junk.vtu", "not a mesh");
+  EXPECT_EQ(run_partet("check " + dir + "/junk.vtu").exit_code, 2);
+  EXPECT_EQ(run_partet("check " + dir + "/nothing.vtu").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace partet
