@@ -2,6 +2,7 @@
 #include "parallel/comm.hpp"
 
 #include <cstdlib>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -15,7 +16,15 @@ void check_mpi(int code, const char* what) {
   throw InternalError(std::string("MPI call ") + what + " failed: " + std::string(text, static_cast<size_t>(len)));
 }
 
+bool MpiSession::launched() {
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
+    if (std::getenv(var) != nullptr) return true;
+  const char* force = std::getenv("PARTET_FORCE_MPI");
+  return force != nullptr && std::string(force) == "1";
+}
+
 MpiSession::MpiSession(int* argc, char*** argv) {
+  if (!launched()) return;
   int initialized = 0;
   MPI_Initialized(&initialized);
   if (!initialized) check_mpi(MPI_Init(argc, argv), "MPI_Init");
@@ -23,57 +32,72 @@ MpiSession::MpiSession(int* argc, char*** argv) {
 }
 
 MpiSession::~MpiSession() {
-  int finalized = 0;
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
   MPI_Finalized(&finalized);
-  if (!finalized) MPI_Finalize();
+  if (initialized && !finalized) MPI_Finalize();
 }
 
 Comm::Comm(MPI_Comm comm) : comm_(comm) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  serial_ = !initialized || comm == MPI_COMM_NULL;
+  if (serial_) return;
   check_mpi(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
   check_mpi(MPI_Comm_size(comm_, &size_), "MPI_Comm_size");
 }
 
 Comm Comm::world() { return Comm(MPI_COMM_WORLD); }
 
-void Comm::barrier() const { check_mpi(MPI_Barrier(comm_), "MPI_Barrier"); }
+void Comm::barrier() const {
+  if (serial_) return;
+  check_mpi(MPI_Barrier(comm_), "MPI_Barrier");
+}
 
 int64_t Comm::max(int64_t v) const {
+  if (serial_) return v;
   int64_t r = 0;
   check_mpi(MPI_Allreduce(&v, &r, 1, MPI_INT64_T, MPI_MAX, comm_), "MPI_Allreduce(max)");
   return r;
 }
 
 int64_t Comm::sum(int64_t v) const {
+  if (serial_) return v;
   int64_t r = 0;
   check_mpi(MPI_Allreduce(&v, &r, 1, MPI_INT64_T, MPI_SUM, comm_), "MPI_Allreduce(sum)");
   return r;
 }
 
 double Comm::max(double v) const {
+  if (serial_) return v;
   double r = 0;
   check_mpi(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, comm_), "MPI_Allreduce(max)");
   return r;
 }
 
 double Comm::sum(double v) const {
+  if (serial_) return v;
   double r = 0;
   check_mpi(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_SUM, comm_), "MPI_Allreduce(sum)");
   return r;
 }
 
 std::vector<double> Comm::all_gather(double v) const {
+  if (serial_) return {v};
   std::vector<double> r(static_cast<size_t>(size_));
   check_mpi(MPI_Allgather(&v, 1, MPI_DOUBLE, r.data(), 1, MPI_DOUBLE, comm_), "MPI_Allgather");
   return r;
 }
 
 std::vector<int64_t> Comm::all_gather(int64_t v) const {
+  if (serial_) return {v};
   std::vector<int64_t> r(static_cast<size_t>(size_));
   check_mpi(MPI_Allgather(&v, 1, MPI_INT64_T, r.data(), 1, MPI_INT64_T, comm_), "MPI_Allgather");
   return r;
 }
 
 void Comm::broadcast(std::string& s, int root) const {
+  if (serial_) return;
   int64_t n = static_cast<int64_t>(s.size());
   check_mpi(MPI_Bcast(&n, 1, MPI_INT64_T, root, comm_), "MPI_Bcast(size)");
   s.resize(static_cast<size_t>(n));
@@ -81,6 +105,7 @@ void Comm::broadcast(std::string& s, int root) const {
 }
 
 std::vector<std::string> Comm::gather(const std::string& bytes, int root) const {
+  if (serial_) return {bytes};
   int64_t n = static_cast<int64_t>(bytes.size());
   std::vector<int64_t> sizes(static_cast<size_t>(size_));
   check_mpi(MPI_Gather(&n, 1, MPI_INT64_T, sizes.data(), 1, MPI_INT64_T, root, comm_), "MPI_Gather(size)");
@@ -106,7 +131,7 @@ std::vector<std::string> Comm::gather(const std::string& bytes, int root) const 
 }
 
 void Comm::abort(int code) const {
-  MPI_Abort(comm_, code);
+  if (!serial_) MPI_Abort(comm_, code);
   std::exit(code);
 }
 

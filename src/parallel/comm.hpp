@@ -1,6 +1,9 @@
 // A thin wrapper over one MPI communicator: every MPI call goes through it
 // and is checked (a failing call throws InternalError naming the call).
-// MpiSession owns MPI_Init/MPI_Finalize for the process.
+// MpiSession owns MPI_Init/MPI_Finalize for the process. Started without a
+// launcher, partet does not initialise MPI at all (an OpenMPI singleton
+// start costs half a second): Comm is then one rank and its collectives are
+// the identity. PARTET_FORCE_MPI=1 initialises MPI anyway.
 #pragma once
 
 #include <mpi.h>
@@ -13,7 +16,10 @@ namespace partet {
 
 class MpiSession {
  public:
+  // Initialises MPI when launched by mpirun/mpiexec (or forced).
   MpiSession(int* argc, char*** argv);
+  // True when this process was started by an MPI launcher.
+  static bool launched();
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -22,6 +28,7 @@ class MpiSession {
 class Comm {
  public:
   explicit Comm(MPI_Comm comm);
+  // MPI_COMM_WORLD, or one serial rank when MPI is not initialised.
   static Comm world();
 
   int rank() const { return rank_; }
@@ -45,6 +52,7 @@ class Comm {
 
  private:
   MPI_Comm comm_;
+  bool serial_ = false;  // no MPI: one rank, collectives are the identity
   int rank_ = 0;
   int size_ = 1;
 };
