@@ -1,0 +1,159 @@
+// Tet shape quality (see quality.hpp). For a tet p0..p3 with edge vectors
+// a = p1-p0, b = p2-p0, c = p3-p0, the face normals (twice the area, all
+// pointing to the same side, inward for a positive tet) are
+//   n0 = (c-a)x(b-a), n1 = bxc, n2 = cxa, n3 = axb   (n_k opposite p_k),
+// D = a.(bxc) = 6 * signed volume, and the circumcentre relative to p0 is
+//   (|a|^2 n1 + |b|^2 n2 + |c|^2 n3) / (2D)
+// (Shewchuk, "Lecture notes on geometric robustness"): only differences of
+// input points and no cancelling sums of squares. With S = |n0|+..+|n3|
+// (twice the total face area), inradius r = |D|/S and circumradius
+// R = |N|/(2|D|), so 3r/R = 6 D^2 / (S |N|).
+// The dihedral angle at the edge shared by the faces opposite p_k and p_l is
+// atan2(|n_k x n_l|, -n_k.n_l): accurate for angles near 0 and 180 alike.
+#include "check/quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "check/compensated_sum.hpp"
+
+namespace partet {
+namespace {
+
+struct V3 {
+  double x, y, z;
+};
+V3 sub(const double* p, const double* q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }
+V3 sub(V3 p, V3 q) { return {p.x - q.x, p.y - q.y, p.z - q.z}; }
+V3 cross(V3 u, V3 v) {
+  return {u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
+}
+double dot(V3 u, V3 v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
+double norm(V3 u) { return std::sqrt(dot(u, u)); }
+V3 axpy(double s, V3 u, V3 v) { return {s * u.x + v.x, s * u.y + v.y, s * u.z + v.z}; }
+
+// The six dihedral angles as pairs of opposite-face indices.
+constexpr int kFacePairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+double dihedral(V3 nk, V3 nl) { return std::atan2(norm(cross(nk, nl)), -dot(nk, nl)); }
+
+bool finite_point(const double* p) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+}  // namespace
+
+TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3) {
+  TetShape s;
+  V3 a = sub(p1, p0), b = sub(p2, p0), c = sub(p3, p0);
+  V3 n[4] = {cross(sub(c, a), sub(b, a)), cross(b, c), cross(c, a), cross(a, b)};
+  double d = dot(a, n[1]);
+  s.volume = d / 6;
+
+  double len[4];
+  double area_sum = 0;
+  for (int k = 0; k < 4; ++k) {
+    len[k] = norm(n[k]);
+    area_sum += len[k];
+  }
+  if (len[0] > 0 && len[1] > 0 && len[2] > 0 && len[3] > 0) {
+    // The smallest angle has the largest cosine: one atan2 per extreme.
+    int lo = 0, hi = 0;
+    double cos_lo = -2, cos_hi = 2;
+    for (int e = 0; e < 6; ++e) {
+      int k = kFacePairs[e][0], l = kFacePairs[e][1];
+      double cosine = -dot(n[k], n[l]) / (len[k] * len[l]);
+      if (cosine > cos_lo) cos_lo = cosine, lo = e;
+      if (cosine < cos_hi) cos_hi = cosine, hi = e;
+    }
+    s.min_dihedral_rad = dihedral(n[kFacePairs[lo][0]], n[kFacePairs[lo][1]]);
+    s.max_dihedral_rad = dihedral(n[kFacePairs[hi][0]], n[kFacePairs[hi][1]]);
+  } else {
+    s.min_dihedral_rad = 0;
+    s.max_dihedral_rad = std::numbers::pi;
+  }
+
+  double aa = dot(a, a), bb = dot(b, b), cc = dot(c, c);
+  V3 centre2d = axpy(aa, n[1], axpy(bb, n[2], V3{cc * n[3].x, cc * n[3].y, cc * n[3].z}));
+  double denominator = area_sum * norm(centre2d);
+  s.radius_ratio = (d != 0 && denominator > 0) ? std::min(1.0, 6 * d * d / denominator) : 0.0;
+
+  double edges[6] = {
+      aa, bb, cc, dot(sub(b, a), sub(b, a)), dot(sub(c, a), sub(c, a)), dot(sub(c, b), sub(c, b))};
+  auto [shortest, longest] = std::minmax_element(edges, edges + 6);
+  s.edge_ratio =
+      *shortest > 0 ? std::sqrt(*longest / *shortest) : std::numeric_limits<double>::infinity();
+  return s;
+}
+
+QualityStats measure_quality(const TetMesh& mesh) {
+  QualityStats q;
+  const size_t num_vertices = mesh.num_vertices();
+  const size_t num_tets = mesh.num_tets();
+  std::vector<double> radius_ratio;
+  radius_ratio.reserve(num_tets);
+
+  constexpr double kDeg = 180 / std::numbers::pi;
+  double min_dihedral = std::numbers::pi, max_dihedral = 0;
+  double rr_min = 1, edge_ratio_max = 0;
+  double rr_sum = 0, edge_ratio_sum = 0;
+  CompensatedSum volume;
+  for (size_t t = 0; t < num_tets; ++t) {
+    const uint32_t* v = &mesh.tets[4 * t];
+    if (v[0] >= num_vertices || v[1] >= num_vertices || v[2] >= num_vertices ||
+        v[3] >= num_vertices)
+      continue;
+    const double* p[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])};
+    if (!finite_point(p[0]) || !finite_point(p[1]) || !finite_point(p[2]) || !finite_point(p[3]))
+      continue;
+    TetShape s = tet_shape(p[0], p[1], p[2], p[3]);
+    min_dihedral = std::min(min_dihedral, s.min_dihedral_rad);
+    max_dihedral = std::max(max_dihedral, s.max_dihedral_rad);
+    double min_deg = s.min_dihedral_rad * kDeg;
+    q.dihedral_under_5 += min_deg < 5;
+    q.dihedral_under_10 += min_deg < 10;
+    q.dihedral_under_20 += min_deg < 20;
+    rr_min = std::min(rr_min, s.radius_ratio);
+    rr_sum += s.radius_ratio;
+    radius_ratio.push_back(s.radius_ratio);
+    edge_ratio_max = std::max(edge_ratio_max, s.edge_ratio);
+    edge_ratio_sum += s.edge_ratio;
+    volume.add(s.volume);
+  }
+
+  q.tets = radius_ratio.size();
+  if (q.tets == 0) return q;
+  q.min_dihedral_deg = min_dihedral * kDeg;
+  q.max_dihedral_deg = max_dihedral * kDeg;
+  q.radius_ratio_min = rr_min;
+  q.radius_ratio_mean = rr_sum / static_cast<double>(q.tets);
+  // The 1st percentile: the value at rank floor(0.01 (n-1)) in ascending order.
+  auto rank = radius_ratio.begin() + static_cast<std::ptrdiff_t>((q.tets - 1) / 100);
+  std::nth_element(radius_ratio.begin(), rank, radius_ratio.end());
+  q.radius_ratio_p01 = *rank;
+  q.edge_ratio_max = edge_ratio_max;
+  q.edge_ratio_mean = edge_ratio_sum / static_cast<double>(q.tets);
+  q.volume = volume.value();
+  return q;
+}
+
+void to_json(nlohmann::json& j, const QualityStats& q) {
+  auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  j = nlohmann::json{{"tets", q.tets},
+                     {"min_dihedral_deg", number(q.min_dihedral_deg)},
+                     {"max_dihedral_deg", number(q.max_dihedral_deg)},
+                     {"radius_ratio_min", number(q.radius_ratio_min)},
+                     {"radius_ratio_mean", number(q.radius_ratio_mean)},
+                     {"radius_ratio_p01", number(q.radius_ratio_p01)},
+                     {"dihedral_under_5", q.dihedral_under_5},
+                     {"dihedral_under_10", q.dihedral_under_10},
+                     {"dihedral_under_20", q.dihedral_under_20},
+                     {"edge_ratio_max", number(q.edge_ratio_max)},
+                     {"edge_ratio_mean", number(q.edge_ratio_mean)},
+                     {"volume", number(q.volume)}};
+}
+
+}  // namespace partet
