@@ -59,7 +59,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     });
     report.run_step("diagnose surface", [&] {
       if (comm.rank() != 0) return ojson::object();
-      summary = diagnose_surface(surface, options.input);
+      summary = diagnose_surface(surface, options.input, [&](double f) { log.progress("diagnose surface", f); });
       for (const auto& note : summary.notes) log.note(file_basename(options.input) + ": " + note);
       ojson c;
       c["shells"] = summary.shells;

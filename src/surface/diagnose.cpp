@@ -160,7 +160,11 @@ void check_self_intersections(const SurfaceMesh& s, const std::string& file) {
 
 }  // namespace
 
-SurfaceSummary diagnose_surface(SurfaceMesh& s, const std::string& file) {
+SurfaceSummary diagnose_surface(SurfaceMesh& s, const std::string& file,
+                                const std::function<void(double)>& progress) {
+  auto done = [&](double fraction) {
+    if (progress) progress(fraction);
+  };
   SurfaceSummary sum;
   if (s.num_triangles() == 0) throw InputError(file + ": the surface has no triangles");
   check_finite(s, file);
@@ -169,10 +173,14 @@ SurfaceSummary diagnose_surface(SurfaceMesh& s, const std::string& file) {
 
   std::vector<std::string> problems;
   find_degenerate(s, problems, file);
+  done(0.1);
   find_duplicates(s, problems, file);
+  done(0.2);
   EdgeTable edges = build_edge_table(s);
   find_bad_edges(s, edges, problems, file);
+  done(0.3);
   if (problems.empty()) find_pinched_vertices(s, edges, problems, file);
+  done(0.4);
   if (!problems.empty()) {
     std::string msg = problems[0];
     for (size_t i = 1; i < problems.size(); ++i) msg += "\n" + problems[i];
@@ -182,6 +190,7 @@ SurfaceSummary diagnose_surface(SurfaceMesh& s, const std::string& file) {
   Stopwatch watch;
   check_self_intersections(s, file);
   sum.seconds_self_intersections = watch.wall();
+  done(0.9);
 
   ShellInfo shells = orient_shells(s, edges, file);
   sum.vertices = s.num_vertices();

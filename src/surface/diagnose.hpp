@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,8 @@ struct SurfaceSummary {
 // triangles (repeated vertex or exactly collinear), duplicate triangles,
 // open edges, non-manifold edges and vertices (all reported together); shell
 // orientation (non-orientable refused); self-intersections (exact); nesting.
-SurfaceSummary diagnose_surface(SurfaceMesh& surface, const std::string& file);
+// `progress`, when given, is told the fraction done after each check.
+SurfaceSummary diagnose_surface(SurfaceMesh& surface, const std::string& file,
+                                const std::function<void(double)>& progress = {});
 
 }  // namespace partet
