@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "io/polygon_faces.hpp"
 #include "io/surface_formats.hpp"
 #include "io/text_cursor.hpp"
 
@@ -19,39 +20,6 @@ namespace partet {
 namespace {
 
 constexpr size_t kMaxTokens = 5;
-
-// Faces that are not triangles: all are counted, the first few are named.
-class PolygonFaces {
- public:
-  void add(size_t face, uint64_t vertices, size_t line) {
-    if (count_ == 0) {
-      first_face_ = face;
-      first_vertices_ = vertices;
-      first_line_ = line;
-    } else if (count_ <= 3) {
-      others_ += ", face " + std::to_string(face) + " at line " + std::to_string(line) + " (" +
-                 std::to_string(vertices) + " vertices)";
-    }
-    ++count_;
-  }
-
-  void check(const std::string& file) const {
-    if (count_ == 0) return;
-    throw InputError(file + ":" + std::to_string(first_line_) + ": face " +
-                     std::to_string(first_face_) + " has " + std::to_string(first_vertices_) +
-                     " vertices; partet meshes triangle surfaces only (" +
-                     std::to_string(count_) + " faces are not triangles" +
-                     (others_.empty() ? "" : "; also" + others_.substr(1)) +
-                     (count_ > 4 ? ", ..." : "") + ")");
-  }
-
- private:
-  size_t count_ = 0;
-  size_t first_face_ = 0;
-  uint64_t first_vertices_ = 0;
-  size_t first_line_ = 0;
-  std::string others_;
-};
 
 class ObjReader {
  public:
@@ -69,7 +37,7 @@ class ObjReader {
         face(line.substr(static_cast<size_t>(tok[0].data() - line.data()) + 1));
       }
     }
-    polygons_.check(file_);
+    polygons_.check();
     if (mesh_.tris.empty())
       throw InputError(file_ + ": no triangles (the file has no 'f' statements)");
     return std::move(mesh_);
@@ -142,7 +110,7 @@ class ObjReader {
     if (n == 3) {
       mesh_.tris.insert(mesh_.tris.end(), v, v + 3);
     } else {
-      polygons_.add(faces_, n, line_);
+      polygons_.add(faces_, n, file_ + ":" + std::to_string(line_), "line " + std::to_string(line_));
     }
     ++faces_;
   }

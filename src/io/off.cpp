@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "io/polygon_faces.hpp"
 #include "io/surface_formats.hpp"
 #include "io/text_cursor.hpp"
 
@@ -26,39 +27,6 @@ constexpr uint64_t kMinVertexBytes = 6;
 constexpr uint64_t kMinFaceBytes = 2;
 constexpr uint64_t kMinTriangleBytes = 8;
 constexpr size_t kMaxTokens = 8;
-
-// Faces that are not triangles: all are counted, the first few are named.
-class PolygonFaces {
- public:
-  void add(size_t face, uint64_t vertices, size_t line) {
-    if (count_ == 0) {
-      first_face_ = face;
-      first_vertices_ = vertices;
-      first_line_ = line;
-    } else if (count_ <= 3) {
-      others_ += ", face " + std::to_string(face) + " at line " + std::to_string(line) + " (" +
-                 std::to_string(vertices) + " vertices)";
-    }
-    ++count_;
-  }
-
-  void check(const std::string& file) const {
-    if (count_ == 0) return;
-    throw InputError(file + ":" + std::to_string(first_line_) + ": face " +
-                     std::to_string(first_face_) + " has " + std::to_string(first_vertices_) +
-                     " vertices; partet meshes triangle surfaces only (" +
-                     std::to_string(count_) + " faces are not triangles" +
-                     (others_.empty() ? "" : "; also" + others_.substr(1)) +
-                     (count_ > 4 ? ", ..." : "") + ")");
-  }
-
- private:
-  size_t count_ = 0;
-  size_t first_face_ = 0;
-  uint64_t first_vertices_ = 0;
-  size_t first_line_ = 0;
-  std::string others_;
-};
 
 // The next line that holds a token, split into at most kMaxTokens tokens.
 size_t next_record(TextCursor& c, std::string_view* tokens) {
@@ -147,7 +115,8 @@ SurfaceMesh parse_off(std::string_view bytes, const std::string& file) {
       c.fail("face " + std::to_string(f) + ": expected its vertex count, found '" +
              std::string(tok[0].substr(0, 40)) + "'");
     if (k != 3) {
-      polygons.add(f, static_cast<uint64_t>(k), c.line_number());
+      polygons.add(f, static_cast<uint64_t>(k), file + ":" + std::to_string(c.line_number()),
+                   "line " + std::to_string(c.line_number()));
       continue;
     }
     if (n < 4) c.fail("face " + std::to_string(f) + " lists fewer than its 3 vertices");
@@ -162,7 +131,7 @@ SurfaceMesh parse_off(std::string_view bytes, const std::string& file) {
       mesh.tris.push_back(static_cast<uint32_t>(index));
     }
   }
-  polygons.check(file);
+  polygons.check();
   if (mesh.tris.empty()) c.fail("no triangles (the header says 0 faces)");
   return mesh;
 }

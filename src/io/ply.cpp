@@ -17,6 +17,7 @@
 
 #include "core/error.hpp"
 #include "io/byte_cursor.hpp"
+#include "io/polygon_faces.hpp"
 #include "io/surface_formats.hpp"
 #include "io/text_cursor.hpp"
 
@@ -64,34 +65,6 @@ struct Header {
   PlyFormat format = PlyFormat::kNone;
   std::vector<Element> elements;
   std::vector<Property> properties;
-};
-
-// Faces that are not triangles: all are counted, the first few are named.
-class PolygonFaces {
- public:
-  void add(uint64_t face, uint64_t vertices, const std::string& located, const std::string& where) {
-    if (count_ == 0) {
-      first_ = located + ": face " + std::to_string(face) + " has " + std::to_string(vertices) +
-               " vertices";
-    } else if (count_ <= 3) {
-      others_ += ", face " + std::to_string(face) + " at " + where + " (" +
-                 std::to_string(vertices) + " vertices)";
-    }
-    ++count_;
-  }
-
-  void check() const {
-    if (count_ == 0) return;
-    throw InputError(first_ + "; partet meshes triangle surfaces only (" + std::to_string(count_) +
-                     " faces are not triangles" +
-                     (others_.empty() ? "" : "; also" + others_.substr(1)) +
-                     (count_ > 4 ? ", ..." : "") + ")");
-  }
-
- private:
-  uint64_t count_ = 0;
-  std::string first_;
-  std::string others_;
 };
 
 std::string clip(std::string_view s) { return std::string(s.substr(0, 40)); }
