@@ -15,6 +15,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/point_text.hpp"
 #include "check/compensated_sum.hpp"
 #include "check/problem_log.hpp"
 #include "check/tet_faces.hpp"
@@ -111,7 +112,7 @@ std::string surface_triangle_text(const SurfaceMesh& s, uint32_t t) {
   const uint32_t* v = &s.tris[3 * t];
   std::string text = "surface triangle " + std::to_string(t) + " [" + std::to_string(v[0]) + " " +
                      std::to_string(v[1]) + " " + std::to_string(v[2]) + "]";
-  for (int i = 0; i < 3; ++i) text += " " + coordinates_text(s.point(v[i]));
+  for (int i = 0; i < 3; ++i) text += " " + point_text(s.point(v[i]));
   return text;
 }
 

@@ -1,7 +1,7 @@
 // Problem lines and entity texts for the validator (see problem_log.hpp).
 #include "check/problem_log.hpp"
 
-#include <cstdio>
+#include "core/point_text.hpp"
 
 namespace partet {
 
@@ -13,15 +13,9 @@ void ProblemKind::report(std::vector<std::string>& lines) const {
   lines.push_back(std::move(line));
 }
 
-std::string coordinates_text(const double* p) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p[0], p[1], p[2]);
-  return buf;
-}
-
 std::string mesh_vertex_text(const TetMesh& mesh, uint32_t v) {
   std::string text = "vertex " + std::to_string(v) + " ";
-  return text + (v < mesh.num_vertices() ? coordinates_text(mesh.point(v)) : "out of range");
+  return text + (v < mesh.num_vertices() ? point_text(mesh.point(v)) : "out of range");
 }
 
 namespace {
@@ -32,7 +26,7 @@ std::string vertices_text(const TetMesh& mesh, const uint32_t* v, int n) {
   text += "]";
   for (int i = 0; i < n; ++i)
     text +=
-        " " + (v[i] < mesh.num_vertices() ? coordinates_text(mesh.point(v[i])) : "out of range");
+        " " + (v[i] < mesh.num_vertices() ? point_text(mesh.point(v[i])) : "out of range");
   return text;
 }
 

@@ -36,8 +36,6 @@ class ProblemKind {
   std::vector<std::string> cases_;
 };
 
-// "(x, y, z)" with 17 significant digits.
-std::string coordinates_text(const double* p);
 // "vertex 7 (x, y, z)"
 std::string mesh_vertex_text(const TetMesh& mesh, uint32_t v);
 // "tet 5 [0 1 3 7] (x, y, z) (x, y, z) (x, y, z) (x, y, z)"; a vertex index

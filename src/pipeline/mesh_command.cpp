@@ -30,6 +30,8 @@ ojson summary_json(const SurfaceSummary& s) {
   j["cavities"] = s.cavities;
   j["reoriented"] = s.reoriented;
   j["volume"] = s.volume;
+  j["unused_vertices"] = s.unused_vertices;
+  j["self_intersection_check_s"] = s.seconds_self_intersections;
   return j;
 }
 

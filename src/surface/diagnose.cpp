@@ -81,10 +81,10 @@ void find_duplicates(const SurfaceMesh& s, std::vector<std::string>& problems, c
 std::string edge_case(const SurfaceMesh& s, const EdgeTable& e, size_t edge) {
   uint32_t h = e.first_half_edge(edge);
   std::string text = "edge " + vertex_text(s, half_edge_from(s, h)) + " - " + vertex_text(s, half_edge_to(s, h)) +
-                     " in triangles";
+                     (e.edge_size(edge) == 1 ? " of triangle" : " of triangles");
   for (uint32_t i = e.edge_start[edge]; i < e.edge_start[edge + 1] && i < e.edge_start[edge] + 4; ++i)
-    text += " " + std::to_string(e.half_edges[i] / 3);
-  if (e.edge_size(edge) > 4) text += " ...";
+    text += (i == e.edge_start[edge] ? " " : ", ") + std::to_string(e.half_edges[i] / 3);
+  if (e.edge_size(edge) > 4) text += ", ...";
   return text;
 }
 

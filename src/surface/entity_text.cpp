@@ -1,15 +1,7 @@
 // Entity descriptions for diagnosis messages.
 #include "surface/entity_text.hpp"
 
-#include <cstdio>
-
 namespace partet {
-
-std::string point_text(const double* p) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", p[0], p[1], p[2]);
-  return buf;
-}
 
 std::string vertex_text(const SurfaceMesh& s, uint32_t v) {
   return "vertex " + std::to_string(v) + " " + point_text(s.point(v));

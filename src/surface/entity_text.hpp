@@ -6,12 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "core/point_text.hpp"
 #include "surface/surface_mesh.hpp"
 
 namespace partet {
 
-// "(x, y, z)" with 17 significant digits.
-std::string point_text(const double* p);
 // "vertex 12 (x, y, z)"
 std::string vertex_text(const SurfaceMesh& s, uint32_t v);
 // "triangle 7 (vertices 1, 2, 3 at (..), (..), (..))"
