@@ -15,11 +15,11 @@
 #include <cmath>
 #include <tuple>
 
-#include "core/point_text.hpp"
 #include "check/compensated_sum.hpp"
 #include "check/problem_log.hpp"
 #include "check/tet_faces.hpp"
 #include "core/error.hpp"
+#include "core/point_text.hpp"
 
 namespace partet {
 namespace {
