@@ -9,6 +9,7 @@
 #include "io/file_bytes.hpp"
 #include "io/mesh_formats.hpp"
 #include "io/surface_formats.hpp"
+#include "io/surface_write.hpp"
 
 namespace partet {
 
@@ -45,6 +46,20 @@ SurfaceMesh read_surface_file(const std::string& path) {
   s.xyz = std::move(m.xyz);
   s.tris = std::move(m.tris);
   return s;
+}
+
+void write_surface_file(const SurfaceMesh& surface, const std::string& path, const WriteOptions& options) {
+  require_extension(path, surface_extensions(), "surface");
+  std::string ext = file_extension(path);
+  if (ext == "off") return write_file_atomic(path, format_off(surface));
+  if (ext == "obj") return write_file_atomic(path, format_obj(surface));
+  if (ext == "stl") return write_file_atomic(path, format_stl_ascii(surface));
+  if (ext == "ply") return write_file_atomic(path, format_ply_binary(surface));
+  TetMesh m;
+  m.xyz = surface.xyz;
+  m.tris = surface.tris;
+  if (ext == "mesh") return write_file_atomic(path, format_medit(m));
+  write_file_atomic(path, format_gmsh(m, !options.ascii));
 }
 
 std::string pvtu_piece_path(const std::string& path, int rank) {

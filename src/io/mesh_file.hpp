@@ -27,6 +27,9 @@ TetMesh read_volume_file(const std::string& path);
 // .mesh, .msh, .vtu: one file; .pvtu: an index and one piece (`<stem>_0.vtu`).
 void write_volume_file(const TetMesh& mesh, const std::string& path, const WriteOptions& options);
 
+// Surfaces: .off .obj .stl (ASCII) .ply (binary) .mesh .msh; exact coordinates.
+void write_surface_file(const SurfaceMesh& surface, const std::string& path, const WriteOptions& options);
+
 // Name of piece `rank` of the .pvtu index `path`: "dir/stem_<rank>.vtu".
 std::string pvtu_piece_path(const std::string& path, int rank);
 
