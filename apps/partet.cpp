@@ -28,6 +28,21 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_option("input", o.input, "Closed triangulated surface to mesh")->required();
   app.add_option("-o,--output", o.output, "Volume mesh to write; the format follows the extension")->required();
   app.add_option("--report", o.report, "Write a JSON report of the run (steps, times per rank, counts, memory)");
+  app.add_option("--max-size", o.max_size, "No target edge length above H anywhere")->type_name("H");
+  app.add_option("--size-factor", o.size_factor, "Scale every target edge length by F (below 1: finer)")
+      ->type_name("F")->capture_default_str();
+  app.add_option("--max-level", o.max_level, "Deepest octree level (guards the finest octants), 1 to 20")
+      ->type_name("L")->capture_default_str();
+  app.add_option("--too-close", o.too_close,
+                 "Gap kept between the surface and the templated core, in target sizes")
+      ->type_name("T")->capture_default_str();
+  std::string stop;
+  app.add_option("--stop-after", stop,
+                 "Stop after a step, writing what it has: surface (diagnosis only, writes nothing), "
+                 "templates (writes the templated core to OUTPUT)")
+      ->check(CLI::IsMember({"surface", "templates"}))->type_name("STEP");
+  app.add_option("--front-out", o.front_out, "Write the initial front (surface + core faces) as a surface file")
+      ->type_name("FILE");
   app.add_flag("--ascii", o.ascii, "Write Gmsh .msh as text instead of binary");
   app.add_flag("-q,--quiet", o.quiet, "Print errors only");
   app.add_flag("-v,--verbose", o.verbose, "Every rank prints its progress, not only rank 0");
@@ -38,6 +53,8 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
     int code = app.exit(e);
     return code == 0 ? 0 : partet::kExitInput;
   }
+  if (stop == "surface") o.stop_after = partet::StopAfter::kSurface;
+  if (stop == "templates") o.stop_after = partet::StopAfter::kTemplates;
   partet::Log log(comm.rank(), o.quiet, o.verbose);
   return partet::run_mesh(o, comm, log);
 }

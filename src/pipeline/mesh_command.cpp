@@ -1,24 +1,51 @@
-// run_mesh: read and diagnose the surface, then the meshing steps. Volume
-// meshing is not in this version yet: after the diagnosis the run says so and
-// exits 3 (meshing could not finish), writing nothing but the report.
+// run_mesh: the pipeline of DESIGN.md, one report step per stage: read and
+// diagnose the surface, build the octree (sizes, points, triangles, 2:1
+// balance), classify leaves, template the interior, make the initial front.
+// Face removals are not in this version yet: a full run says so and exits 3;
+// --stop-after templates writes the templated core and exits 0.
 #include "pipeline/mesh_command.hpp"
 
+#include <algorithm>
+
+#include "check/quality.hpp"
 #include "core/error.hpp"
+#include "front/initial_front.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
+#include "octree/balance.hpp"
+#include "octree/build.hpp"
+#include "octree/classify.hpp"
+#include "octree/sizing.hpp"
 #include "parallel/collective_step.hpp"
+#include "parallel/write_parts.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
+#include "templates/template_mesh.hpp"
 
 namespace partet {
 
 namespace {
 
+const char* stop_name(StopAfter s) {
+  switch (s) {
+    case StopAfter::kSurface: return "surface";
+    case StopAfter::kTemplates: return "templates";
+    case StopAfter::kNone: break;
+  }
+  return "none";
+}
+
 ojson options_json(const MeshOptions& o) {
   ojson j;
   j["input"] = o.input;
   j["output"] = o.output;
+  j["stop_after"] = stop_name(o.stop_after);
+  j["max_size"] = o.max_size;
+  j["size_factor"] = o.size_factor;
+  j["max_level"] = o.max_level;
+  j["too_close"] = o.too_close;
   j["ascii"] = o.ascii;
+  if (!o.front_out.empty()) j["front_out"] = o.front_out;
   return j;
 }
 
@@ -35,6 +62,60 @@ ojson summary_json(const SurfaceSummary& s) {
   return j;
 }
 
+// Everything one rank holds between steps.
+struct MeshState {
+  SurfaceMesh surface;
+  SurfaceSummary summary;
+  RootCube root;
+  VertexSizing sizing;
+  LinearOctree tree;
+  TemplateCore core;
+};
+
+void check_options(const MeshOptions& o) {
+  require_extension(o.input, surface_extensions(), "input surface");
+  require_extension(o.output, volume_extensions(), "output");
+  if (!o.front_out.empty()) require_extension(o.front_out, surface_extensions(), "front output");
+  if (!(o.max_size > 0)) throw InputError("--max-size must be positive (got " + std::to_string(o.max_size) + ")");
+  if (!(o.size_factor > 0))
+    throw InputError("--size-factor must be positive (got " + std::to_string(o.size_factor) + ")");
+  if (o.max_level < 1 || o.max_level > kMaxLevel)
+    throw InputError("--max-level must be between 1 and " + std::to_string(kMaxLevel) + " (got " +
+                     std::to_string(o.max_level) + ")");
+  if (!(o.too_close >= 0)) throw InputError("--too-close must be zero or positive");
+}
+
+ojson build_tree(MeshState& s, const MeshOptions& o) {
+  s.root = make_root_cube(s.summary.bbox);
+  SizingOptions sizing;
+  sizing.max_size = o.max_size;
+  sizing.size_factor = o.size_factor;
+  sizing.max_level = o.max_level;
+  s.sizing = size_vertices(s.surface, s.root, sizing);
+  s.tree = build_octree(s.sizing.grid, s.sizing.level);
+  refine_for_triangles(s.tree, s.surface, s.root, s.sizing.level);
+  balance_octree(s.tree);
+  int deepest = 0;
+  for (uint8_t l : s.tree.level) deepest = std::max<int>(deepest, l);
+  ojson c;
+  c["leaves"] = s.tree.size();
+  c["deepest level"] = deepest;
+  c["root edge"] = s.root.edge();
+  return c;
+}
+
+ojson classify(MeshState& s, const MeshOptions& o) {
+  ClassifyOptions options;
+  options.too_close = o.too_close;
+  ClassCounts n = classify_leaves(s.tree, s.surface, s.root, s.sizing.size, options);
+  ojson c;
+  c["boundary"] = n.boundary;
+  c["too close"] = n.too_close;
+  c["interior"] = n.interior;
+  c["outside"] = n.outside;
+  return c;
+}
+
 }  // namespace
 
 int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
@@ -43,37 +124,77 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   report.set("options", options_json(options));
   int code = kExitOk;
   std::string message;
+  MeshState s;
+  // This version meshes on rank 0; the other ranks take part in every step
+  // (agreement, timings) and write empty pieces.
+  const bool root_rank = comm.rank() == 0;
   try {
-    SurfaceMesh surface;
-    SurfaceSummary summary;
     report.run_step("check options", [&] {
-      require_extension(options.output, volume_extensions(), "output");
-      require_extension(options.input, surface_extensions(), "input surface");
+      check_options(options);
       return ojson::object();
     });
     report.run_step("read surface", [&] {
-      if (comm.rank() != 0) return ojson::object();
-      surface = read_surface_file(options.input);
+      if (!root_rank) return ojson::object();
+      s.surface = read_surface_file(options.input);
       ojson c;
-      c["triangles"] = surface.num_triangles();
-      c["vertices"] = surface.num_vertices();
+      c["triangles"] = s.surface.num_triangles();
+      c["vertices"] = s.surface.num_vertices();
       return c;
     });
     report.run_step("diagnose surface", [&] {
-      if (comm.rank() != 0) return ojson::object();
-      summary = diagnose_surface(surface, options.input, [&](double f) { log.progress("diagnose surface", f); });
-      for (const auto& note : summary.notes) log.note(file_basename(options.input) + ": " + note);
+      if (!root_rank) return ojson::object();
+      s.summary = diagnose_surface(s.surface, options.input, [&](double f) { log.progress("diagnose surface", f); });
+      for (const auto& note : s.summary.notes) log.note(file_basename(options.input) + ": " + note);
       ojson c;
-      c["shells"] = summary.shells;
-      c["cavities"] = summary.cavities;
-      c["reoriented"] = summary.reoriented;
-      c["volume"] = summary.volume;
+      c["shells"] = s.summary.shells;
+      c["cavities"] = s.summary.cavities;
+      c["reoriented"] = s.summary.reoriented;
+      c["volume"] = s.summary.volume;
       return c;
     });
-    if (comm.rank() == 0) report.set("surface", summary_json(summary));
-    throw MeshingError(options.input + ": the surface is valid (" + std::to_string(summary.triangles) +
-                       " triangles, " + std::to_string(summary.shells) +
-                       " shells), but volume meshing is not available in this version yet; nothing was written");
+    if (root_rank) report.set("surface", summary_json(s.summary));
+    if (options.stop_after == StopAfter::kSurface) {
+      report.finish(code, message);
+      if (!options.report.empty()) collective_step(comm, [&] { report.write(options.report); });
+      return kExitOk;
+    }
+    report.run_step("build octree", [&] { return root_rank ? build_tree(s, options) : ojson::object(); });
+    report.run_step("classify leaves", [&] { return root_rank ? classify(s, options) : ojson::object(); });
+    report.run_step("template interior", [&] {
+      if (!root_rank) return ojson::object();
+      s.core = template_interior(s.tree, s.root);
+      QualityStats q = measure_quality(s.core.mesh);
+      ojson c;
+      c["tets"] = s.core.mesh.num_tets();
+      c["vertices"] = s.core.mesh.num_vertices();
+      c["leaves"] = s.core.leaves_templated;
+      c["min dihedral"] = q.min_dihedral_deg;
+      return c;
+    });
+    report.run_step("initial front", [&] {
+      if (!root_rank) return ojson::object();
+      InitialFront front = make_initial_front(s.tree, s.root, s.core, s.surface);
+      if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
+      ojson c;
+      c["faces"] = front.num_faces();
+      c["surface faces"] = front.surface_faces;
+      c["core faces"] = front.num_faces() - front.surface_faces;
+      return c;
+    });
+    if (options.stop_after == StopAfter::kTemplates) {
+      report.run_step("write core", [&] {
+        write_distributed_mesh(s.core.mesh, options.output, {options.ascii}, comm);
+        ojson c;
+        c["tets"] = s.core.mesh.num_tets();
+        c["file"] = options.output;
+        return c;
+      });
+    } else {
+      throw MeshingError(options.input + ": the surface is valid and the interior is templated (" +
+                         std::to_string(s.core.mesh.num_tets()) +
+                         " tets), but face removals are not available in this version yet; nothing was written"
+                         " (--stop-after templates writes the templated core)");
+    }
   } catch (const Error& e) {
     code = e.exit_code();
     message = e.what();

@@ -2,17 +2,27 @@
 // to the pipeline (no globals).
 #pragma once
 
+#include <limits>
 #include <string>
 
 namespace partet {
 
+// Where a run may stop early, writing what it has.
+enum class StopAfter { kNone, kSurface, kTemplates };
+
 struct MeshOptions {
-  std::string input;    // surface file
-  std::string output;   // volume mesh file (.mesh .msh .vtu .pvtu)
-  std::string report;   // --report FILE.json, empty for none
-  bool ascii = false;   // --ascii: text Gmsh output
-  bool quiet = false;   // --quiet: errors only
-  bool verbose = false; // --verbose: every rank speaks
+  std::string input;      // surface file
+  std::string output;     // volume mesh file (.mesh .msh .vtu .pvtu)
+  std::string report;     // --report FILE.json, empty for none
+  std::string front_out;  // --front-out FILE: the initial front as a surface
+  StopAfter stop_after = StopAfter::kNone;
+  double max_size = std::numeric_limits<double>::infinity();  // --max-size H
+  double size_factor = 1;                                     // --size-factor F
+  int max_level = 20;                                         // --max-level L
+  double too_close = 0.8;                                     // --too-close T
+  bool ascii = false;     // --ascii: text Gmsh output
+  bool quiet = false;     // --quiet: errors only
+  bool verbose = false;   // --verbose: every rank speaks
 };
 
 }  // namespace partet

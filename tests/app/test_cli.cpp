@@ -37,14 +37,53 @@ TEST(Cli, MissingArgumentsAreInputErrors) {
   EXPECT_EQ(run_partet("--no-such-option").exit_code, 2);
 }
 
-TEST(Cli, GoodSurfaceIsDiagnosedThenStopsBeforeVolumeMeshing) {
+TEST(Cli, GoodSurfaceIsTemplatedThenStopsBeforeFaceRemovals) {
   std::string dir = scratch_dir("cli_good");
   auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/cube.vtu");
   EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_TRUE(contains(r.output, "read surface")) << r.output;
-  EXPECT_TRUE(contains(r.output, "12 triangles")) << r.output;
-  EXPECT_TRUE(contains(r.output, "volume meshing is not available")) << r.output;
+  for (const char* step : {"read surface", "12 triangles", "diagnose surface", "build octree", "classify leaves",
+                           "template interior", "initial front", "face removals are not available"})
+    EXPECT_TRUE(contains(r.output, step)) << step << "\n" << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/cube.vtu"));
+}
+
+TEST(Cli, StopAfterTemplatesWritesAValidCoreAndTheFront) {
+  std::string dir = scratch_dir("cli_templates");
+  auto r = run_partet(data_path("good/sphere966.off") + " -o " + dir + "/core.pvtu --stop-after templates" +
+                      " --front-out " + dir + "/front.off --report " + dir + "/r.json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto check = run_partet("check " + dir + "/core.pvtu --json");
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  auto j = nlohmann::json::parse(check.output);
+  EXPECT_GT(j["tets"].get<int>(), 1000);
+  EXPECT_NEAR(j["quality"]["min_dihedral_deg"].get<double>(), 45.0, 1e-6);
+  auto report = nlohmann::json::parse(test::read_text(dir + "/r.json"));
+  EXPECT_EQ(report["exit_code"], 0);
+  bool templated = false;
+  for (const auto& step : report["steps"])
+    if (step["name"] == "template interior") templated = step["counts"]["tets"] == j["tets"];
+  EXPECT_TRUE(templated);
+  // The front is a surface partet reads back: the input triangles plus the core's faces.
+  SurfaceMesh front = read_surface_file(dir + "/front.off");
+  EXPECT_GT(front.num_triangles(), 966u);
+}
+
+TEST(Cli, StopAfterSurfaceOnlyDiagnoses) {
+  std::string dir = scratch_dir("cli_stop_surface");
+  auto r = run_partet(data_path("fixable/tet-shuffled.off") + " -o " + dir + "/t.vtu --stop-after surface");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "reoriented")) << r.output;
+  EXPECT_FALSE(contains(r.output, "build octree")) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t.vtu"));
+}
+
+TEST(Cli, BadOptionValuesAreInputErrors) {
+  std::string in = data_path("good/cube.off") + " -o /tmp/partet_never.vtu ";
+  for (const char* bad : {"--size-factor 0", "--size-factor -1", "--max-size 0", "--max-level 0",
+                          "--max-level 21", "--too-close -1", "--stop-after nothing", "--front-out f.xyz"}) {
+    auto r = run_partet(in + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.output;
+  }
 }
 
 TEST(Cli, FixableSurfaceGetsANote) {

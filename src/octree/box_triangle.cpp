@@ -1,0 +1,260 @@
+// Box against triangle: exact separating-axis intersection test and a
+// floating-point distance threshold (see box_triangle.hpp).
+#include "octree/box_triangle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/predicates.hpp"
+
+namespace partet {
+
+namespace {
+
+bool point_in_box(const double* p, const double* lo, const double* hi) {
+  return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] && p[2] <= hi[2];
+}
+
+// The 8 corners of box [lo, hi]; corner k takes hi on axis i iff bit i of k.
+void box_corners(const double* lo, const double* hi, double corner[8][3]) {
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 3; ++i) corner[k][i] = (k >> i & 1) ? hi[i] : lo[i];
+}
+
+// A linear function of the corner with gradient signs g[3] (each -1, 0, +1)
+// is largest at the corner taking hi where g > 0 and lo elsewhere, and
+// smallest at the opposite corner (any choice where g = 0).
+int max_corner(const int* g) { return (g[0] > 0) | (g[1] > 0) << 1 | (g[2] > 0) << 2; }
+
+int sign_of_difference(double a, double b) { return (a > b) - (a < b); }
+
+// The axes kept by the projection dropping `drop`, in orient2d_projected's
+// order.
+void kept_axes(int drop, int& i, int& j) {
+  i = drop == 2 ? 0 : drop + 1;
+  j = drop == 0 ? 2 : (drop == 1 ? 0 : 1);
+}
+
+// In the projection dropping axis `drop` (kept axes i, j as in
+// orient2d_projected), orient2d(p, q, r) is linear in r with gradient
+// (-(q_j - p_j), q_i - p_i); true when the box's projection lies strictly on
+// the side of line pq given by `side` (+1 or -1), tested at its extreme
+// corner only.
+bool box_strictly_on_side(const double* p, const double* q, const double corner[8][3], int drop, int side) {
+  int i, j;
+  kept_axes(drop, i, j);
+  int g[3] = {0, 0, 0};
+  g[i] = -sign_of_difference(q[j], p[j]) * side;
+  g[j] = sign_of_difference(q[i], p[i]) * side;
+  // The corner where side * orient2d is smallest (the dropped axis does not
+  // matter).
+  return orient2d_projected(p, q, corner[7 ^ max_corner(g)], drop) == side;
+}
+
+double clamp_gap(double v, double lo, double hi) { return v < lo ? lo - v : (v > hi ? v - hi : 0.0); }
+
+double point_box_dist2(const double* p, const double* lo, const double* hi) {
+  double d2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double g = clamp_gap(p[i], lo[i], hi[i]);
+    d2 += g * g;
+  }
+  return d2;
+}
+
+double dot(const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+
+void sub(const double* u, const double* v, double* w) {
+  w[0] = u[0] - v[0];
+  w[1] = u[1] - v[1];
+  w[2] = u[2] - v[2];
+}
+
+double dist2(const double* u, const double* v) {
+  double w[3];
+  sub(u, v, w);
+  return dot(w, w);
+}
+
+// Squared distance from p to triangle abc (closest point by Voronoi
+// regions, Ericson, Real-Time Collision Detection 5.1.5).
+double point_triangle_dist2(const double* p, const double* a, const double* b, const double* c) {
+  double ab[3], ac[3], ap[3], bp[3], cp[3];
+  sub(b, a, ab);
+  sub(c, a, ac);
+  sub(p, a, ap);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return dot(ap, ap);
+  sub(p, b, bp);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return dot(bp, bp);
+  const double vc = d1 * d4 - d3 * d2;
+  double x[3];
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    for (int i = 0; i < 3; ++i) x[i] = a[i] + v * ab[i];
+    return dist2(p, x);
+  }
+  sub(p, c, cp);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return dot(cp, cp);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    for (int i = 0; i < 3; ++i) x[i] = a[i] + w * ac[i];
+    return dist2(p, x);
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    for (int i = 0; i < 3; ++i) x[i] = b[i] + w * (c[i] - b[i]);
+    return dist2(p, x);
+  }
+  const double denom = 1 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  for (int i = 0; i < 3; ++i) x[i] = a[i] + ab[i] * v + ac[i] * w;
+  return dist2(p, x);
+}
+
+// Squared distance between segments p1q1 and p2q2 (Ericson 5.1.9).
+double segment_segment_dist2(const double* p1, const double* q1, const double* p2, const double* q2) {
+  double d1[3], d2[3], r[3];
+  sub(q1, p1, d1);
+  sub(q2, p2, d2);
+  sub(p1, p2, r);
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  double s = 0, t = 0;
+  if (a <= 0 && e <= 0) return dot(r, r);
+  if (a <= 0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = dot(d1, r);
+    if (e <= 0) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = dot(d1, d2);
+      const double denom = a * e - b * b;
+      s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  double x1[3], x2[3];
+  for (int i = 0; i < 3; ++i) {
+    x1[i] = p1[i] + d1[i] * s;
+    x2[i] = p2[i] + d2[i] * t;
+  }
+  return dist2(x1, x2);
+}
+
+}  // namespace
+
+bool box_meets_triangle(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
+  for (int i = 0; i < 3; ++i) {
+    if (std::max({a[i], b[i], c[i]}) < lo[i] || std::min({a[i], b[i], c[i]}) > hi[i]) return false;
+  }
+  if (point_in_box(a, lo, hi) || point_in_box(b, lo, hi) || point_in_box(c, lo, hi)) return true;
+  double corner[8][3];
+  box_corners(lo, hi, corner);
+  // normal[k]: sign of component k of (b - a) x (c - a), which is also the
+  // orientation of the triangle projected along axis k.
+  int normal[3];
+  for (int k = 0; k < 3; ++k) normal[k] = orient2d_projected(a, b, c, k);
+  // The triangle's plane: orient3d(a, b, c, d) grows along the normal.
+  const int top = max_corner(normal);
+  const int bottom = 7 ^ top;
+  if (orient3d(a, b, c, corner[top]) < 0 || orient3d(a, b, c, corner[bottom]) > 0) return false;
+  const double* v[3] = {a, b, c};
+  for (int drop = 0; drop < 3; ++drop) {
+    int i, j;
+    kept_axes(drop, i, j);
+    for (int e = 0; e < 3; ++e) {
+      const double* p = v[e];
+      const double* q = v[(e + 1) % 3];
+      if (p[i] == q[i] && p[j] == q[j]) continue;  // the edge projects to a point: no axis
+      if (normal[drop] != 0) {
+        // The triangle is on side normal[drop] of each of its edges.
+        if (box_strictly_on_side(p, q, corner, drop, -normal[drop])) return false;
+      } else if (box_strictly_on_side(p, q, corner, drop, 1) || box_strictly_on_side(p, q, corner, drop, -1)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool box_triangle_closer_than(const double* lo, const double* hi, const double* a, const double* b,
+                              const double* c, double r) {
+  const double r2 = r * r;
+  // Lower bound: distance between the box and the triangle's bounding box.
+  double gap2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double tlo = std::min({a[i], b[i], c[i]}), thi = std::max({a[i], b[i], c[i]});
+    const double g = tlo > hi[i] ? tlo - hi[i] : (lo[i] > thi ? lo[i] - thi : 0.0);
+    gap2 += g * g;
+  }
+  if (gap2 >= r2) return false;
+  // Upper bound: a triangle vertex near the box.
+  if (point_box_dist2(a, lo, hi) < r2 || point_box_dist2(b, lo, hi) < r2 || point_box_dist2(c, lo, hi) < r2)
+    return true;
+  // Lower bound: distance between the box and the triangle's plane.
+  double ab[3], ac[3], n[3];
+  sub(b, a, ab);
+  sub(c, a, ac);
+  n[0] = ab[1] * ac[2] - ab[2] * ac[1];
+  n[1] = ab[2] * ac[0] - ab[0] * ac[2];
+  n[2] = ab[0] * ac[1] - ab[1] * ac[0];
+  const double len = std::sqrt(dot(n, n));
+  double centre_offset = 0, reach = 0;
+  for (int i = 0; i < 3; ++i) {
+    centre_offset += n[i] * (0.5 * (lo[i] + hi[i]) - a[i]);
+    reach += 0.5 * (hi[i] - lo[i]) * std::fabs(n[i]);
+  }
+  if (std::fabs(centre_offset) - reach >= r * len) return false;
+  // Lower bounds: separation along the in-plane normals n x e of the edges
+  // (the triangle lies behind each edge's line within its plane).
+  const double* v[3] = {a, b, c};
+  for (int e = 0; e < 3; ++e) {
+    const double* p = v[e];
+    const double* q = v[(e + 1) % 3];
+    double edge[3], m[3];
+    sub(q, p, edge);
+    m[0] = n[1] * edge[2] - n[2] * edge[1];
+    m[1] = n[2] * edge[0] - n[0] * edge[2];
+    m[2] = n[0] * edge[1] - n[1] * edge[0];
+    double offset = 0, spread = 0;
+    for (int i = 0; i < 3; ++i) {
+      offset += m[i] * (0.5 * (lo[i] + hi[i]) - p[i]);
+      spread += 0.5 * (hi[i] - lo[i]) * std::fabs(m[i]);
+    }
+    // Orient m away from the opposite vertex.
+    double w[3];
+    sub(v[(e + 2) % 3], p, w);
+    if (dot(m, w) > 0) offset = -offset;
+    if (offset - spread >= r * std::sqrt(dot(m, m))) return false;
+  }
+  // Exact features (in floating point): box corners against the triangle,
+  // box edges against triangle edges.
+  double corner[8][3];
+  box_corners(lo, hi, corner);
+  for (int k = 0; k < 8; ++k)
+    if (point_triangle_dist2(corner[k], a, b, c) < r2) return true;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int k = 0; k < 8; ++k) {
+      if (k >> axis & 1) continue;
+      const double* p = corner[k];
+      const double* q = corner[k | (1 << axis)];
+      for (int e = 0; e < 3; ++e)
+        if (segment_segment_dist2(p, q, v[e], v[(e + 1) % 3]) < r2) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace partet

@@ -1,0 +1,187 @@
+// Boundary, interior/outside and too-close classification of the leaves
+// (see classify.hpp).
+#include "octree/classify.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "octree/box_triangle.hpp"
+#include "octree/inside_index.hpp"
+#include "octree/neighbours.hpp"
+#include "octree/range_query.hpp"
+
+namespace partet {
+
+namespace {
+
+uint32_t find_root(std::vector<uint32_t>& parent, uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+// Interior or outside for every unclassified leaf: groups connected across
+// faces (union-find), one exact inside test per group at the centre of its
+// first leaf. Each face-adjacent pair is joined from its finer (or either,
+// if equal) leaf, which finds the other as the one leaf containing the cell
+// just across its face at its anchor. Returns the group count.
+size_t fill_groups(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root) {
+  const size_t n = tree.size();
+  std::vector<uint32_t> parent(n);
+  for (size_t i = 0; i < n; ++i) parent[i] = static_cast<uint32_t>(i);
+  const LeafRangeQuery query(tree);
+  for (size_t i = 0; i < n; ++i) {
+    if (tree.cls[i] != LeafClass::kUnclassified) continue;
+    uint32_t a[3];
+    tree.anchor(i, a[0], a[1], a[2]);
+    const uint32_t h = octant_edge(tree.level[i]);
+    for (int f = 0; f < kFaceCount; ++f) {
+      const int axis = f / 2;
+      uint32_t p[3] = {a[0], a[1], a[2]};
+      if (f & 1) {
+        if (a[axis] + h >= kGridSize) continue;
+        p[axis] += h;
+      } else {
+        if (a[axis] == 0) continue;
+        p[axis] -= 1;
+      }
+      const size_t j = query.locate_near(i, p[0], p[1], p[2]);
+      if (tree.cls[j] != LeafClass::kUnclassified || tree.level[j] > tree.level[i]) continue;
+      const uint32_t ri = find_root(parent, static_cast<uint32_t>(i));
+      const uint32_t rj = find_root(parent, static_cast<uint32_t>(j));
+      if (ri < rj) parent[rj] = ri;
+      if (rj < ri) parent[ri] = rj;
+    }
+  }
+  const RayParityIndex index(s);
+  size_t groups = 0;
+  for (size_t i = 0; i < n; ++i) {
+    if (tree.cls[i] != LeafClass::kUnclassified) continue;
+    const uint32_t r = find_root(parent, static_cast<uint32_t>(i));
+    if (r != i) {  // roots are the smallest index of their group: decided
+      tree.cls[i] = tree.cls[r];
+      continue;
+    }
+    ++groups;
+    uint32_t a[3];
+    tree.anchor(i, a[0], a[1], a[2]);
+    const uint32_t h = octant_edge(tree.level[i]);
+    double centre[3];
+    root.lattice_point(2 * a[0] + h, 2 * a[1] + h, 2 * a[2] + h, centre);
+    tree.cls[i] = index.inside(centre) ? LeafClass::kInterior : LeafClass::kOutside;
+  }
+  return groups;
+}
+
+// A triangle with its target size, its cap b_t and the grid cells within
+// its search reach.
+struct NearRegion {
+  uint32_t t;
+  double size, cap;
+  uint32_t lo[3], hi[3];
+};
+
+// Triangles whose regions are searched with one range query: consecutive
+// ones in tree order while their union stays within twice the first's
+// extent. Only the query is shared; each triangle still tests the leaves of
+// its own region, so the result is the same as one query per triangle.
+constexpr size_t kBatch = 32;
+
+// Marks interior leaves too close to a triangle (see classify.hpp).
+void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                    const std::vector<double>& vertex_size, const LeafTriangles& bins, double factor) {
+  const auto region_of = [&](uint32_t t) {
+    const uint32_t* v = &s.tris[3 * size_t{t}];
+    NearRegion r;
+    r.t = t;
+    r.size = (vertex_size[v[0]] + vertex_size[v[1]] + vertex_size[v[2]]) / 3;
+    r.cap = octant_edge(bins.coarsest[t]) * root.unit;
+    const double reach = factor * std::max(r.size, r.cap);
+    double lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min({s.point(v[0])[i], s.point(v[1])[i], s.point(v[2])[i]}) - reach;
+      hi[i] = std::max({s.point(v[0])[i], s.point(v[1])[i], s.point(v[2])[i]}) + reach;
+    }
+    grid_range(root, lo, hi, r.lo, r.hi);
+    return r;
+  };
+  const std::vector<uint32_t> order = triangles_in_tree_order(s, root);
+  const LeafRangeQuery query(tree);
+  std::vector<NearRegion> batch;
+  std::vector<size_t> leaves;
+  size_t next = 0;
+  while (next < order.size()) {
+    batch.assign(1, region_of(order[next++]));
+    uint32_t lo[3], hi[3], limit = 0;
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = batch[0].lo[i];
+      hi[i] = batch[0].hi[i];
+      limit = std::max(limit, 2 * (hi[i] - lo[i] + 1));
+    }
+    while (next < order.size() && batch.size() < kBatch) {
+      const NearRegion r = region_of(order[next]);
+      bool fits = true;
+      for (int i = 0; i < 3; ++i) fits = fits && std::max(hi[i], r.hi[i]) - std::min(lo[i], r.lo[i]) < limit;
+      if (!fits) break;
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], r.lo[i]);
+        hi[i] = std::max(hi[i], r.hi[i]);
+      }
+      batch.push_back(r);
+      ++next;
+    }
+    query.leaves_in_range(lo, hi, leaves);
+    for (size_t leaf : leaves) {
+      if (tree.cls[leaf] != LeafClass::kInterior) continue;
+      uint32_t a[3];
+      tree.anchor(leaf, a[0], a[1], a[2]);
+      const uint32_t edge = octant_edge(tree.level[leaf]);
+      const double h = edge * root.unit;
+      double blo[3], bhi[3];
+      leaf_box(tree, root, leaf, blo, bhi);
+      for (const NearRegion& r : batch) {
+        bool in_region = true;
+        for (int i = 0; i < 3; ++i) in_region = in_region && a[i] <= r.hi[i] && a[i] + (edge - 1) >= r.lo[i];
+        if (!in_region) continue;
+        const uint32_t* v = &s.tris[3 * size_t{r.t}];
+        const double gap = factor * std::max(r.size, std::min(0.5 * h, r.cap));
+        if (box_triangle_closer_than(blo, bhi, s.point(v[0]), s.point(v[1]), s.point(v[2]), gap)) {
+          tree.cls[leaf] = LeafClass::kTooClose;
+          break;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+ClassCounts classify_leaves(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                            const std::vector<double>& vertex_size, const LeafTriangles& bins,
+                            const ClassifyOptions& options) {
+  PARTET_ASSERT(bins.first.size() == tree.size() + 1, "triangle bins from another tree");
+  PARTET_ASSERT(vertex_size.size() == s.num_vertices(), "one target size per surface vertex");
+  PARTET_ASSERT(options.too_close >= 0, "too-close factor must not be negative");
+  for (size_t i = 0; i < tree.size(); ++i)
+    tree.cls[i] = bins.count(i) ? LeafClass::kBoundary : LeafClass::kUnclassified;
+  ClassCounts counts;
+  counts.groups = fill_groups(tree, s, root);
+  if (options.too_close > 0) mark_too_close(tree, s, root, vertex_size, bins, options.too_close);
+  for (LeafClass c : tree.cls) {
+    counts.boundary += c == LeafClass::kBoundary;
+    counts.too_close += c == LeafClass::kTooClose;
+    counts.interior += c == LeafClass::kInterior;
+    counts.outside += c == LeafClass::kOutside;
+  }
+  return counts;
+}
+
+ClassCounts classify_leaves(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                            const std::vector<double>& vertex_size, const ClassifyOptions& options) {
+  return classify_leaves(tree, s, root, vertex_size, bin_triangles(tree, s, root), options);
+}
+
+}  // namespace partet

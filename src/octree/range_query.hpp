@@ -1,0 +1,59 @@
+// Range queries on a complete linear octree: the leaves overlapping a box of
+// grid cells, without scanning the leaves.
+//
+// Method. The box is covered by at most 2 x 2 x 2 octants of the deepest
+// level whose edge is not below the box's largest extent. Each of them lies
+// inside one leaf (found by locating its anchor) or is split, and then its
+// leaves are the contiguous run of keys [key, key + span), descended child
+// by child with binary searches inside the parent's run (short runs are
+// scanned). Locating a key uses a table over the octants of one level (about
+// as many as there are leaves): the first leaf at or after each of them, so
+// a search only bisects the few leaves of one table cell.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "octree/octree.hpp"
+
+namespace partet {
+
+// Grid cells [lo, hi] (inclusive, clamped to the root cube) that cover the
+// closed space box [blo, bhi] with one cell of padding on every side, so that
+// every leaf whose closed box meets [blo, bhi] contains one of the cells
+// despite rounding in the conversion to grid units.
+void grid_range(const RootCube& root, const double* blo, const double* bhi, uint32_t* lo, uint32_t* hi);
+
+class LeafRangeQuery {
+ public:
+  // Keeps a reference to `tree` (complete), which must not change while the
+  // query object is used; builds the decoded anchors of its leaves and the
+  // search table.
+  explicit LeafRangeQuery(const LinearOctree& tree);
+
+  // Replaces `out` with the indices, ascending, of the leaves that contain
+  // at least one grid cell of [lo, hi] (inclusive ranges).
+  void leaves_in_range(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out) const;
+
+  // Index of the leaf containing grid point (x, y, z), as
+  // LinearOctree::locate.
+  size_t locate(uint32_t x, uint32_t y, uint32_t z) const;
+  // The same, galloping from leaf `hint` then bisecting: faster when the
+  // answer is near the hint in Morton order (e.g. a neighbour of the hint).
+  size_t locate_near(size_t hint, uint32_t x, uint32_t y, uint32_t z) const;
+
+ private:
+  // First leaf whose key is above `key` (the leaf containing it is the one
+  // before).
+  size_t upper_bound(uint64_t key) const;
+  void descend(uint64_t key, const uint32_t* a, int level, size_t b, size_t e, const uint32_t* lo,
+               const uint32_t* hi, std::vector<size_t>& out) const;
+
+  const LinearOctree& tree_;
+  std::vector<uint32_t> anchor_;  // 3 grid coordinates per leaf
+  int table_shift_ = 0;           // key >> table_shift_ = table cell
+  std::vector<uint32_t> table_;   // per cell, plus one: first leaf with key >= the cell's first key
+};
+
+}  // namespace partet

@@ -1,0 +1,201 @@
+// Box against triangle: the exact intersection test on touching and
+// one-ulp-apart cases and against a feature-by-feature reference on random
+// (often degenerate) inputs; the distance threshold against sampling.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/intersections.hpp"
+#include "octree/box_triangle.hpp"
+
+namespace partet {
+namespace {
+
+const double kLo[3] = {0, 0, 0};
+const double kHi[3] = {1, 1, 1};
+
+double up(double x) { return std::nextafter(x, HUGE_VAL); }
+
+// Reference: a vertex in the box, a triangle edge meeting a box face (two
+// triangles each), or a box edge meeting the triangle.
+bool reference_meets(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
+  const double* v[3] = {a, b, c};
+  for (const double* p : v) {
+    bool in = true;
+    for (int i = 0; i < 3; ++i) in = in && p[i] >= lo[i] && p[i] <= hi[i];
+    if (in) return true;
+  }
+  double corner[8][3];
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 3; ++i) corner[k][i] = (k >> i & 1) ? hi[i] : lo[i];
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      // The face's corners in cyclic order.
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      const int base = side << axis;
+      const int f[4] = {base, base | 1 << u, base | 1 << u | 1 << w, base | 1 << w};
+      for (int e = 0; e < 3; ++e) {
+        if (segment_triangle_intersect(v[e], v[(e + 1) % 3], corner[f[0]], corner[f[1]], corner[f[2]]) ||
+            segment_triangle_intersect(v[e], v[(e + 1) % 3], corner[f[0]], corner[f[2]], corner[f[3]]))
+          return true;
+      }
+    }
+  }
+  for (int axis = 0; axis < 3; ++axis)
+    for (int k = 0; k < 8; ++k)
+      if (!(k >> axis & 1) && segment_triangle_intersect(corner[k], corner[k | 1 << axis], a, b, c)) return true;
+  return false;
+}
+
+bool meets(const double* a, const double* b, const double* c) {
+  const bool got = box_meets_triangle(kLo, kHi, a, b, c);
+  EXPECT_EQ(got, reference_meets(kLo, kHi, a, b, c));
+  return got;
+}
+
+TEST(OctreeBoxTriangle, TouchingACornerAndOneUlpAway) {
+  // The plane x + y + z = 3 passes through corner (1, 1, 1).
+  const double a[3] = {3, 0, 0}, b[3] = {0, 3, 0}, c[3] = {0, 0, 3};
+  EXPECT_TRUE(meets(a, b, c));
+  const double a2[3] = {up(3), 0, 0}, b2[3] = {0, up(3), 0}, c2[3] = {0, 0, up(3)};
+  EXPECT_FALSE(meets(a2, b2, c2));
+  // A triangle vertex exactly on the corner, the rest outside.
+  const double p[3] = {1, 1, 1}, q[3] = {2, 1, 3}, r[3] = {1, 3, 2};
+  EXPECT_TRUE(meets(p, q, r));
+  const double p2[3] = {up(1), 1, 1};
+  EXPECT_FALSE(meets(p2, q, r));
+}
+
+TEST(OctreeBoxTriangle, TouchingAnEdgeAndOneUlpAway) {
+  // The plane x + y = 2 contains the box edge x = y = 1.
+  const double a[3] = {2, 0, -1}, b[3] = {0, 2, -1}, c[3] = {1, 1, 5};
+  EXPECT_TRUE(meets(a, b, c));
+  const double a2[3] = {up(2), 0, -1}, b2[3] = {0, up(2), -1}, c2[3] = {up(1), up(1), 5};
+  EXPECT_FALSE(meets(a2, b2, c2));
+  // A triangle edge crossing the box edge x = y = 1 at (1, 1, 0.5); the
+  // rest of the triangle has x + y > 2.
+  const double g[3] = {2, 0, 0.5}, h[3] = {0, 2, 0.5}, k[3] = {2, 2, 0.7};
+  EXPECT_TRUE(meets(g, h, k));
+  const double g2[3] = {up(2), 0, 0.5}, h2[3] = {0, up(2), 0.5};
+  EXPECT_FALSE(meets(g2, h2, k));
+}
+
+TEST(OctreeBoxTriangle, TouchingAFaceAndOneUlpAway) {
+  const double a[3] = {-1, -1, 1}, b[3] = {3, -1, 1}, c[3] = {-1, 3, 1};
+  EXPECT_TRUE(meets(a, b, c));
+  const double a2[3] = {-1, -1, up(1)}, b2[3] = {3, -1, up(1)}, c2[3] = {-1, 3, up(1)};
+  EXPECT_FALSE(meets(a2, b2, c2));
+  // A single vertex on the face's interior.
+  const double p[3] = {0.5, 0.5, 1}, q[3] = {0.5, 2, 2}, r[3] = {2, 0.5, 3};
+  EXPECT_TRUE(meets(p, q, r));
+}
+
+TEST(OctreeBoxTriangle, InsideCrossingAndDisjoint) {
+  const double a[3] = {0.2, 0.2, 0.2}, b[3] = {0.8, 0.3, 0.4}, c[3] = {0.5, 0.9, 0.6};
+  EXPECT_TRUE(meets(a, b, c));  // inside
+  const double d[3] = {-5, -5, 0.5}, e[3] = {5, -5, 0.5}, f[3] = {0, 5, 0.5};
+  EXPECT_TRUE(meets(d, e, f));  // slices the box, no vertex inside
+  const double g[3] = {0.5, 0.5, -1}, h[3] = {0.5, 0.6, 2}, k[3] = {0.6, 0.5, 2};
+  EXPECT_TRUE(meets(g, h, k));  // thin sliver piercing two faces
+  // Disjoint although the bounding boxes overlap, no vertex is inside and
+  // the plane cuts the box: only a box axis x triangle edge separates them.
+  const double p[3] = {0, 1.5, -0.5}, q[3] = {-1, 1, 0.5}, r[3] = {3, 1.5, 0.5};
+  EXPECT_FALSE(meets(p, q, r));
+  // Beside the box edge x = y = 1: x + y >= 2.7 on the whole triangle.
+  const double p2[3] = {2.2, 0.5, -1}, q2[3] = {0.5, 2.2, -1}, r2[3] = {1.4, 1.4, 3};
+  EXPECT_FALSE(meets(p2, q2, r2));
+  const double s[3] = {3, 3, 3}, t[3] = {4, 3, 3}, u[3] = {3, 4, 3};
+  EXPECT_FALSE(meets(s, t, u));  // far away
+}
+
+TEST(OctreeBoxTriangle, MatchesReferenceOnLatticeTriangles) {
+  // Coordinates from a small set around the box: many exact contacts.
+  const double values[] = {-1, -0.5, 0, 0.25, 0.5, 1, 1.5, 2};
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> pick(0, 7);
+  int hits = 0, total = 0;
+  for (int k = 0; k < 40000; ++k) {
+    double v[3][3];
+    for (auto& p : v)
+      for (double& x : p) x = values[pick(rng)];
+    if (points_collinear(v[0], v[1], v[2])) continue;
+    const bool got = box_meets_triangle(kLo, kHi, v[0], v[1], v[2]);
+    ASSERT_EQ(got, reference_meets(kLo, kHi, v[0], v[1], v[2])) << k;
+    hits += got;
+    ++total;
+  }
+  EXPECT_GT(hits, total / 10);
+  EXPECT_LT(hits, total - total / 10);
+}
+
+TEST(OctreeBoxTriangle, MatchesReferenceOnRandomTriangles) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(-1.5, 2.5);
+  for (int k = 0; k < 40000; ++k) {
+    double v[3][3];
+    for (auto& p : v)
+      for (double& x : p) x = coord(rng);
+    const double lo[3] = {0, 0.25, 0.5}, hi[3] = {0.5, 0.75, 1};
+    ASSERT_EQ(box_meets_triangle(lo, hi, v[0], v[1], v[2]), reference_meets(lo, hi, v[0], v[1], v[2])) << k;
+  }
+}
+
+// Distance from the box to the triangle sampled on a barycentric grid: an
+// upper bound, within `spacing` of the true distance.
+double sampled_distance(const double* a, const double* b, const double* c, int n, double& spacing) {
+  double best = HUGE_VAL;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double s = static_cast<double>(i) / n, t = static_cast<double>(j) / n;
+      double d2 = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double p = a[k] + s * (b[k] - a[k]) + t * (c[k] - a[k]);
+        const double g = p < kLo[k] ? kLo[k] - p : (p > kHi[k] ? p - kHi[k] : 0.0);
+        d2 += g * g;
+      }
+      best = std::min(best, std::sqrt(d2));
+    }
+  double longest = 0;
+  const double* v[3] = {a, b, c};
+  for (int e = 0; e < 3; ++e) {
+    double l2 = 0;
+    for (int k = 0; k < 3; ++k) l2 += (v[e][k] - v[(e + 1) % 3][k]) * (v[e][k] - v[(e + 1) % 3][k]);
+    longest = std::max(longest, std::sqrt(l2));
+  }
+  spacing = longest / n;
+  return best;
+}
+
+TEST(OctreeBoxTriangle, DistanceThresholdMatchesSampling) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> coord(-2, 3);
+  int tested = 0;
+  for (int k = 0; k < 3000; ++k) {
+    double v[3][3];
+    for (auto& p : v)
+      for (double& x : p) x = coord(rng);
+    if (box_meets_triangle(kLo, kHi, v[0], v[1], v[2])) continue;
+    double spacing;
+    const double d = sampled_distance(v[0], v[1], v[2], 120, spacing);
+    EXPECT_TRUE(box_triangle_closer_than(kLo, kHi, v[0], v[1], v[2], d * (1 + 1e-12) + 1e-12)) << k;
+    if (d - spacing > 1e-9) {
+      EXPECT_FALSE(box_triangle_closer_than(kLo, kHi, v[0], v[1], v[2], d - spacing)) << k;
+    }
+    ++tested;
+  }
+  EXPECT_GT(tested, 1000);
+  // Exact cases: a triangle parallel to the top face at height 0.5 above
+  // it, and one beside an edge.
+  const double a[3] = {-1, -1, 1.5}, b[3] = {3, -1, 1.5}, c[3] = {-1, 3, 1.5};
+  EXPECT_TRUE(box_triangle_closer_than(kLo, kHi, a, b, c, 0.5001));
+  EXPECT_FALSE(box_triangle_closer_than(kLo, kHi, a, b, c, 0.4999));
+  // Edge (2, 2, -1)-(2, 2, 2) of a vertical triangle faces the box edge
+  // x = y = 1 at distance sqrt(2).
+  const double p[3] = {2, 2, -1}, q[3] = {2, 2, 2}, r[3] = {4, 3, 0.5};
+  EXPECT_TRUE(box_triangle_closer_than(kLo, kHi, p, q, r, std::sqrt(2.0) + 1e-9));
+  EXPECT_FALSE(box_triangle_closer_than(kLo, kHi, p, q, r, std::sqrt(2.0) - 1e-9));
+}
+
+}  // namespace
+}  // namespace partet
