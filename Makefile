@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan fuzz clean
+.PHONY: all deps build demo test test-asan fuzz bench-steps clean
 
 all: build
 
@@ -26,6 +26,9 @@ test-asan: deps
 	@cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=Debug -DPARTET_SANITIZE=ON -DPARTET_WERROR=ON >/dev/null
 	@cmake --build $(BUILD)-asan -j $(JOBS)
 	@cd $(BUILD)-asan && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -E '^mpi_'
+
+bench-steps: build
+	@bench/steps $(BUILD)
 
 fuzz:
 	@PARTET_FUZZ_DEPS=1 scripts/install-deps

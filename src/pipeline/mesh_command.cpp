@@ -163,12 +163,18 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     report.run_step("template interior", [&] {
       if (!root_rank) return ojson::object();
       s.core = template_interior(s.tree, s.root);
-      QualityStats q = measure_quality(s.core.mesh);
       ojson c;
       c["tets"] = s.core.mesh.num_tets();
       c["vertices"] = s.core.mesh.num_vertices();
       c["leaves"] = s.core.leaves_templated;
+      return c;
+    });
+    report.run_step("core quality", [&] {
+      if (!root_rank || s.core.mesh.num_tets() == 0) return ojson::object();
+      QualityStats q = measure_quality(s.core.mesh);
+      ojson c;
       c["min dihedral"] = q.min_dihedral_deg;
+      c["max dihedral"] = q.max_dihedral_deg;
       return c;
     });
     report.run_step("initial front", [&] {

@@ -34,6 +34,7 @@ void RunReport::run_step(const std::string& name, const std::function<ojson()>& 
   step["name"] = name;
   step["wall_s"] = comm_.all_gather(wall);
   step["cpu_s"] = comm_.all_gather(cpu);
+  step["peak_rss_mib"] = comm_.all_gather(peak_rss_mib());
   step["counts"] = counts;
   if (!failure.empty()) step["error"] = failure;
   root_["steps"].push_back(step);
