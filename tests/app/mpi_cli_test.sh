@@ -17,6 +17,12 @@ grep -q "\"ranks\": $np" "$out/r.json" || { echo "report lacks ranks $np"; exit 
 log=$(run "$data/good/cube.off" -o "$out/c.vtu"); code=$?
 [[ $code -eq 3 ]] || { echo "cube.off: exit $code, expected 3"; echo "$log"; exit 1; }
 
+log=$(run "$data/good/sphere966.off" -o "$out/core.pvtu" --stop-after templates); code=$?
+[[ $code -eq 0 ]] || { echo "sphere966.off --stop-after templates: exit $code"; echo "$log"; exit 1; }
+[[ -e "$out/core_$((np - 1)).vtu" ]] || { echo "missing piece of rank $((np - 1))"; exit 1; }
+log=$("$partet" check "$out/core.pvtu" 2>&1); code=$?
+[[ $code -eq 0 ]] || { echo "the core pieces are not a valid mesh"; echo "$log"; exit 1; }
+
 log=$(run --version); code=$?
 [[ $code -eq 0 ]] || { echo "--version: exit $code"; exit 1; }
 echo "mpi cli np=$np: ok"
