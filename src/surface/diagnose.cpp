@@ -146,7 +146,7 @@ void find_pinched_vertices(const SurfaceMesh& s, const EdgeTable& e, std::vector
                                  cases));
 }
 
-void check_self_intersections(const SurfaceMesh& s, const std::string& file) {
+void find_self_intersecting(const SurfaceMesh& s, std::vector<std::string>& problems, const std::string& file) {
   constexpr size_t kLimit = 1000;
   std::vector<TrianglePair> pairs = find_self_intersections(s, kLimit);
   if (pairs.empty()) return;
@@ -155,7 +155,7 @@ void check_self_intersections(const SurfaceMesh& s, const std::string& file) {
     cases.push_back(triangle_text(s, pairs[i].a) + " meets " + triangle_text(s, pairs[i].b));
   std::string what = pairs.size() >= kLimit ? "or more pairs of intersecting triangles (the surface intersects itself):"
                                             : "pairs of intersecting triangles (the surface intersects itself):";
-  throw InputError(case_list(file, pairs.size(), what, cases));
+  problems.push_back(case_list(file, pairs.size(), what, cases));
 }
 
 }  // namespace
@@ -171,26 +171,31 @@ SurfaceSummary diagnose_surface(SurfaceMesh& s, const std::string& file,
   sum.unused_vertices = drop_unused_vertices(s);
   if (sum.unused_vertices) sum.notes.push_back(std::to_string(sum.unused_vertices) + " unused vertices dropped");
 
+  // Every problem found is reported together; each check runs when its
+  // preconditions hold (pinched vertices need manifold edges, the
+  // intersection test needs non-degenerate, distinct triangles).
   std::vector<std::string> problems;
   find_degenerate(s, problems, file);
   done(0.1);
   find_duplicates(s, problems, file);
   done(0.2);
+  const bool triangles_sound = problems.empty();
   EdgeTable edges = build_edge_table(s);
   find_bad_edges(s, edges, problems, file);
   done(0.3);
   if (problems.empty()) find_pinched_vertices(s, edges, problems, file);
   done(0.4);
+  if (triangles_sound) {
+    Stopwatch watch;
+    find_self_intersecting(s, problems, file);
+    sum.seconds_self_intersections = watch.wall();
+  }
+  done(0.9);
   if (!problems.empty()) {
     std::string msg = problems[0];
     for (size_t i = 1; i < problems.size(); ++i) msg += "\n" + problems[i];
     throw InputError(msg);
   }
-
-  Stopwatch watch;
-  check_self_intersections(s, file);
-  sum.seconds_self_intersections = watch.wall();
-  done(0.9);
 
   ShellInfo shells = orient_shells(s, edges, file);
   sum.vertices = s.num_vertices();

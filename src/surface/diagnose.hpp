@@ -28,10 +28,12 @@ struct SurfaceSummary {
   std::vector<std::string> notes;
 };
 
-// In order: finite coordinates; unused vertices (dropped); degenerate
-// triangles (repeated vertex or exactly collinear), duplicate triangles,
-// open edges, non-manifold edges and vertices (all reported together); shell
-// orientation (non-orientable refused); self-intersections (exact); nesting.
+// In order: finite coordinates; unused vertices (dropped); then, reported
+// together, degenerate triangles (repeated vertex or exactly collinear),
+// duplicate triangles, open edges, non-manifold edges and vertices, and
+// self-intersections (exact; checked when the triangles are sound, even on
+// an open surface); then shell orientation (non-orientable refused) and
+// nesting.
 // `progress`, when given, is told the fraction done after each check.
 SurfaceSummary diagnose_surface(SurfaceMesh& surface, const std::string& file,
                                 const std::function<void(double)>& progress = {});

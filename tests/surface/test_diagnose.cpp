@@ -81,6 +81,7 @@ TEST(Diagnose, BadCorpusFilesAreRefusedWithTheirReason) {
   };
   for (Case c : {Case{"bad/holes.off", "open edges"}, Case{"bad/mushroom.off", "open edges"},
                  Case{"bad/surface1.stl", "open edges"}, Case{"bad/object.stl", "open edges"},
+                 Case{"bad/object.stl", "intersecting triangles"},
                  Case{"bad/cow.off", "intersect"}, Case{"bad/elk.off", "intersect"},
                  Case{"bad/cube_quad.off", "4 vertices"}}) {
     SCOPED_TRACE(c.file);
