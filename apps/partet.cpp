@@ -43,6 +43,9 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
       ->check(CLI::IsMember({"surface", "templates"}))->type_name("STEP");
   app.add_option("--front-out", o.front_out, "Write the initial front (surface + core faces) as a surface file")
       ->type_name("FILE");
+  app.add_flag("--keep-partial", o.keep_partial,
+               "When meshing cannot finish (exit 3), write the tets made to OUTPUT and the front left to "
+               "OUTPUT's stem + .front.off");
   app.add_flag("--ascii", o.ascii, "Write Gmsh .msh as text instead of binary");
   app.add_flag("-q,--quiet", o.quiet, "Print errors only");
   app.add_flag("-v,--verbose", o.verbose, "Every rank prints its progress, not only rank 0");

@@ -504,7 +504,8 @@ TetMesh VtuReader::read() {
     decode<int64_t>(
         *ids_, [&](size_t n) { mesh.global_ids.reserve(n); },
         [&](int64_t v) {
-          if (v < 0) fail(ids_->at, "GlobalNodeId " + std::to_string(v) + " is negative");
+          // Ids are 64-bit patterns (partet's surface vertices set the top
+          // bit); VTK stores them as signed Int64: keep the bits.
           if (mesh.global_ids.size() == num_points_) fail(ids_->at, "GlobalNodeId holds more values than points");
           mesh.global_ids.push_back(static_cast<uint64_t>(v));
         });

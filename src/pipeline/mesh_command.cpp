@@ -1,6 +1,7 @@
 // run_mesh: the pipeline of DESIGN.md, one report step per stage: read and
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
-// balance), classify leaves, template the interior, make the initial front.
+// balance), classify leaves, make the interior set manifold (demoting
+// leaves to too close), template the interior, make the initial front.
 // Face removals are not in this version yet: a full run says so and exits 3;
 // --stop-after templates writes the templated core and exits 0.
 #include "pipeline/mesh_command.hpp"
@@ -9,6 +10,9 @@
 
 #include "check/quality.hpp"
 #include "core/error.hpp"
+#include "core/point_text.hpp"
+#include "front/face_removal.hpp"
+#include "front/front.hpp"
 #include "front/initial_front.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
@@ -20,6 +24,7 @@
 #include "parallel/write_parts.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
+#include "templates/manifold_core.hpp"
 #include "templates/template_mesh.hpp"
 
 namespace partet {
@@ -70,7 +75,58 @@ struct MeshState {
   VertexSizing sizing;
   LinearOctree tree;
   TemplateCore core;
+  InitialFront initial_front;
+  TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
 };
+
+// The surface triangles in the numbering of the front (and so of the mesh):
+// surface vertex v is front vertex core_vertices + v.
+std::vector<uint32_t> boundary_triangles(const MeshState& s) {
+  std::vector<uint32_t> tris(s.surface.tris);
+  for (uint32_t& v : tris) v += static_cast<uint32_t>(s.initial_front.core_vertices);
+  return tris;
+}
+
+// The alive faces of `front` as a surface (vertices compacted).
+SurfaceMesh front_left(const Front& front) {
+  SurfaceMesh left;
+  std::vector<uint32_t> index(front.num_vertices(), UINT32_MAX);
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+    if (!front.alive(f)) continue;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = front.face(f)[k];
+      if (index[v] == UINT32_MAX) {
+        index[v] = static_cast<uint32_t>(left.num_vertices());
+        left.xyz.insert(left.xyz.end(), front.point(v), front.point(v) + 3);
+      }
+      left.tris.push_back(index[v]);
+    }
+  }
+  return left;
+}
+
+// "12 front faces remain, near (x, y, z), (x, y, z), ..."
+std::string where_left(const SurfaceMesh& left) {
+  std::string text = std::to_string(left.num_triangles()) + " front faces remain, near";
+  for (size_t t = 0; t < left.num_triangles() && t < 5; ++t) {
+    double c[3];
+    for (int i = 0; i < 3; ++i)
+      c[i] = (left.xyz[3 * left.tris[3 * t] + i] + left.xyz[3 * left.tris[3 * t + 1] + i] +
+              left.xyz[3 * left.tris[3 * t + 2] + i]) / 3.0;
+    text += (t == 0 ? " " : ", ") + point_text(c);
+  }
+  if (left.num_triangles() > 5) text += ", ...";
+  return text;
+}
+
+// OUTPUT's stem + ".front.off": where --keep-partial puts the front left.
+std::string partial_front_path(const std::string& output) {
+  size_t dot = output.find_last_of('.');
+  size_t slash = output.find_last_of('/');
+  std::string stem = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? output
+                                                                                            : output.substr(0, dot);
+  return stem + ".front.off";
+}
 
 void check_options(const MeshOptions& o) {
   require_extension(o.input, surface_extensions(), "input surface");
@@ -160,6 +216,16 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     }
     report.run_step("build octree", [&] { return root_rank ? build_tree(s, options) : ojson::object(); });
     report.run_step("classify leaves", [&] { return root_rank ? classify(s, options) : ojson::object(); });
+    report.run_step("manifold core", [&] {
+      if (!root_rank) return ojson::object();
+      ManifoldCoreCounts n = make_core_manifold(s.tree);
+      ojson c;
+      c["demoted"] = n.demoted;
+      c["repairs"] = n.repaired;
+      c["rounds"] = n.rounds;
+      c["interior"] = n.interior;
+      return c;
+    });
     report.run_step("template interior", [&] {
       if (!root_rank) return ojson::object();
       s.core = template_interior(s.tree, s.root);
@@ -179,7 +245,8 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     });
     report.run_step("initial front", [&] {
       if (!root_rank) return ojson::object();
-      InitialFront front = make_initial_front(s.tree, s.root, s.core, s.surface);
+      s.initial_front = make_initial_front(s.tree, s.root, s.core, s.surface);
+      const InitialFront& front = s.initial_front;
       if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
       ojson c;
       c["faces"] = front.num_faces();
@@ -196,10 +263,45 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         return c;
       });
     } else {
-      throw MeshingError(options.input + ": the surface is valid and the interior is templated (" +
-                         std::to_string(s.core.mesh.num_tets()) +
-                         " tets), but face removals are not available in this version yet; nothing was written"
-                         " (--stop-after templates writes the templated core)");
+      SurfaceMesh left;
+      report.run_step("face removals (tree)", [&] {
+        if (!root_rank) return ojson::object();
+        Front front(s.initial_front, s.tree, s.root);
+        s.mesh = std::move(s.core.mesh);
+        RemovalCounts n = remove_faces_tree_supported(front, s.tree, s.root, s.mesh);
+        left = front_left(front);
+        ojson c;
+        c["tets"] = n.tets;
+        c["faces left"] = n.faces_left;
+        c["passes"] = n.passes;
+        return c;
+      });
+      int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
+      if (faces_left > 0) {
+        if (options.keep_partial) {
+          report.run_step("write partial", [&] {
+            write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
+            if (root_rank) write_surface_file(left, partial_front_path(options.output), {});
+            ojson c;
+            c["tets"] = s.mesh.num_tets();
+            c["front"] = partial_front_path(options.output);
+            return c;
+          });
+        }
+        throw MeshingError(options.input + ": tree-less face removals are not available in this version yet and " +
+                           where_left(left) + (options.keep_partial ? "; the tets made and the front left were written"
+                                                                    : "; nothing was written (--keep-partial writes "
+                                                                      "the tets made and the front left)"));
+      }
+      report.run_step("write mesh", [&] {
+        if (root_rank) s.mesh.tris = boundary_triangles(s);
+        write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
+        ojson c;
+        c["tets"] = s.mesh.num_tets();
+        c["vertices"] = s.mesh.num_vertices();
+        c["file"] = options.output;
+        return c;
+      });
     }
   } catch (const Error& e) {
     code = e.exit_code();

@@ -20,6 +20,7 @@ struct MeshOptions {
   double size_factor = 1;                                     // --size-factor F
   int max_level = 20;                                         // --max-level L
   double too_close = 0.8;                                     // --too-close T
+  bool keep_partial = false;  // --keep-partial: on exit 3, write the tets made and the front left
   bool ascii = false;     // --ascii: text Gmsh output
   bool quiet = false;     // --quiet: errors only
   bool verbose = false;   // --verbose: every rank speaks

@@ -14,8 +14,14 @@ grep -q "open edges" <<<"$log" || { echo "no reason given"; echo "$log"; exit 1;
 [[ ! -e "$out/h.vtu" ]] || { echo "output written for bad input"; exit 1; }
 grep -q "\"ranks\": $np" "$out/r.json" || { echo "report lacks ranks $np"; exit 1; }
 
-log=$(run "$data/good/cube.off" -o "$out/c.vtu"); code=$?
-[[ $code -eq 3 ]] || { echo "cube.off: exit $code, expected 3"; echo "$log"; exit 1; }
+log=$(run "$data/good/cube.off" -o "$out/c.pvtu"); code=$?
+[[ $code -eq 0 ]] || { echo "cube.off: exit $code, expected 0"; echo "$log"; exit 1; }
+log=$("$partet" check "$out/c.pvtu" --surface "$data/good/cube.off" 2>&1); code=$?
+[[ $code -eq 0 ]] || { echo "the cube mesh is not valid"; echo "$log"; exit 1; }
+
+log=$(run "$data/good/icosahedron.off" -o "$out/i.vtu"); code=$?
+[[ $code -eq 3 ]] || { echo "icosahedron.off: exit $code, expected 3"; echo "$log"; exit 1; }
+grep -q "front faces remain, near" <<<"$log" || { echo "exit 3 does not say where"; echo "$log"; exit 1; }
 
 log=$(run "$data/good/sphere966.off" -o "$out/core.pvtu" --stop-after templates); code=$?
 [[ $code -eq 0 ]] || { echo "sphere966.off --stop-after templates: exit $code"; echo "$log"; exit 1; }

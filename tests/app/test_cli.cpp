@@ -37,14 +37,29 @@ TEST(Cli, MissingArgumentsAreInputErrors) {
   EXPECT_EQ(run_partet("--no-such-option").exit_code, 2);
 }
 
-TEST(Cli, GoodSurfaceIsTemplatedThenStopsBeforeFaceRemovals) {
-  std::string dir = scratch_dir("cli_good");
-  auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/cube.vtu");
-  EXPECT_EQ(r.exit_code, 3) << r.output;
+TEST(Cli, CubeIsMeshedByTreeSupportedRemovals) {
+  std::string dir = scratch_dir("cli_cube");
+  auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/cube.mesh");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* step : {"read surface", "12 triangles", "diagnose surface", "build octree", "classify leaves",
-                           "template interior", "initial front", "face removals are not available"})
+                           "template interior", "initial front", "face removals (tree)", "write mesh"})
     EXPECT_TRUE(contains(r.output, step)) << step << "\n" << r.output;
-  EXPECT_FALSE(std::filesystem::exists(dir + "/cube.vtu"));
+  auto check = run_partet("check " + dir + "/cube.mesh --surface " + data_path("good/cube.off"));
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+}
+
+TEST(Cli, UnfinishedMeshingSaysWhereAndKeepsThePartialMesh) {
+  std::string dir = scratch_dir("cli_partial");
+  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.vtu");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(contains(r.output, "front faces remain, near (")) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/ico.vtu"));
+  auto kept = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.vtu --keep-partial");
+  EXPECT_EQ(kept.exit_code, 3) << kept.output;
+  // What was made is a valid partial mesh; the front left is a closed surface.
+  EXPECT_EQ(run_partet("check " + dir + "/ico.vtu").exit_code, 0);
+  SurfaceMesh left = read_surface_file(dir + "/ico.front.off");
+  EXPECT_GT(left.num_triangles(), 0u);
 }
 
 TEST(Cli, StopAfterTemplatesWritesAValidCoreAndTheFront) {
@@ -89,7 +104,7 @@ TEST(Cli, BadOptionValuesAreInputErrors) {
 TEST(Cli, FixableSurfaceGetsANote) {
   std::string dir = scratch_dir("cli_fixable");
   auto r = run_partet(data_path("fixable/tet-shuffled.off") + " -o " + dir + "/t.mesh");
-  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "note: tet-shuffled.off: reoriented")) << r.output;
 }
 
@@ -124,7 +139,10 @@ TEST(Cli, UnreadableInputsAndUnknownFormats) {
 
 TEST(Cli, QuietPrintsOnlyErrors) {
   std::string dir = scratch_dir("cli_quiet");
-  auto r = run_partet(data_path("good/cube.off") + " -o " + dir + "/c.vtu --quiet");
+  auto ok = run_partet(data_path("good/cube.off") + " -o " + dir + "/c.vtu --quiet");
+  EXPECT_EQ(ok.exit_code, 0);
+  EXPECT_EQ(ok.output, "");
+  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/i.vtu --quiet");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_FALSE(contains(r.output, "read surface")) << r.output;
   EXPECT_TRUE(contains(r.output, "partet: error:")) << r.output;

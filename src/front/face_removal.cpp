@@ -1,0 +1,203 @@
+// Tree-supported face removals: the queue, the neighbourhood and target
+// ordering, and the bookkeeping after each tet (see face_removal.hpp).
+#include "front/face_removal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/predicates.hpp"
+#include "front/removal_checks.hpp"
+#include "octree/range_query.hpp"
+
+namespace partet {
+
+namespace {
+
+constexpr uint64_t kNeverFailed = std::numeric_limits<uint64_t>::max();
+
+struct Target {
+  double score;
+  uint32_t vertex;
+};
+
+double squared_distance(const double* x, const double* y) {
+  const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+  return dx * dx + dy * dy + dz * dz;
+}
+
+// q = √2 det / l_rms³ (1 for the regular tet, 0 when flat).
+double shape_measure(const double* a, const double* b, const double* c, const double* p) {
+  const double sum = squared_distance(a, b) + squared_distance(b, c) + squared_distance(c, a) +
+                     squared_distance(a, p) + squared_distance(b, p) + squared_distance(c, p);
+  const double rms = std::sqrt(sum / 6);
+  return std::sqrt(2.0) * orient3d_value(a, b, c, p) / (rms * rms * rms);
+}
+
+// Everything one call keeps between faces.
+class Remover {
+ public:
+  Remover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
+      : front_(front), tree_(tree), root_(root), out_(out), options_(options) {}
+
+  RemovalCounts run();
+
+ private:
+  // Tries one face; true when a tet was made.
+  bool try_face(uint32_t f);
+  void neighbourhood(uint32_t f);
+  bool neighbourhood_changed_since(uint64_t stamp) const;
+  bool neighbourhood_foreign() const;
+  void make_tet(uint32_t f, uint32_t p);
+
+  Front& front_;
+  LinearOctree& tree_;
+  const RootCube& root_;
+  TetMesh& out_;
+  const RemovalOptions& options_;
+  RemovalCounts counts_;
+
+  std::vector<uint32_t> queue_;
+  std::vector<uint64_t> failed_at_;  // per face slot: change counter at its last failure
+  std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
+  double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
+  std::vector<size_t> leaves_;
+  NearFront near_;
+  std::vector<Target> targets_;
+  std::vector<uint32_t> added_, shrunk_;
+};
+
+void Remover::neighbourhood(uint32_t f) {
+  const uint32_t* t = front_.face(f);
+  const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
+  const double longest =
+      std::sqrt(std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])}));
+  const double half = options_.reach * longest;
+  for (int k = 0; k < 3; ++k) {
+    const double centre = (p[0][k] + p[1][k] + p[2][k]) / 3;
+    const double lo = std::min({p[0][k], p[1][k], p[2][k], centre - half});
+    const double hi = std::max({p[0][k], p[1][k], p[2][k], centre + half});
+    box_lo_[k] = std::max(lo, root_.origin[k]);
+    box_hi_[k] = std::min(hi, root_.origin[k] + root_.edge());
+  }
+  uint32_t glo[3], ghi[3];
+  grid_range(root_, box_lo_, box_hi_, glo, ghi);
+  front_.query().leaves_in_range(glo, ghi, leaves_);
+}
+
+bool Remover::neighbourhood_changed_since(uint64_t stamp) const {
+  for (size_t leaf : leaves_)
+    if (front_.leaf_changed(leaf) > stamp) return true;
+  return false;
+}
+
+bool Remover::neighbourhood_foreign() const {
+  for (size_t leaf : leaves_)
+    if (tree_.owner[leaf] != options_.rank) return true;
+  return false;
+}
+
+void Remover::make_tet(uint32_t f, uint32_t p) {
+  const uint32_t* t = front_.face(f);
+  out_.tets.insert(out_.tets.end(), {t[0], t[1], t[2], p});
+  ++counts_.tets;
+  added_.clear();
+  shrunk_.clear();
+  front_.apply_tet(f, p, added_, shrunk_);
+  for (uint32_t g : added_) queue_.push_back(g);
+  failed_at_.resize(front_.num_face_slots(), kNeverFailed);
+  foreign_.resize(front_.num_face_slots(), 0);
+  for (uint32_t leaf : shrunk_) {
+    LeafClass& cls = tree_.cls[leaf];
+    if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front_.leaf_front_empty(leaf))
+      cls = LeafClass::kDone;
+  }
+}
+
+bool Remover::try_face(uint32_t f) {
+  gather_near_front(front_, leaves_, near_);
+  const uint32_t* t = front_.face(f);
+  const uint32_t a = t[0], b = t[1], c = t[2];
+  const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
+  targets_.clear();
+  for (uint32_t v : near_.vertices) {
+    if (v == a || v == b || v == c) continue;
+    const double* q = front_.point(v);
+    bool inside = true;
+    for (int k = 0; k < 3; ++k) inside = inside && box_lo_[k] <= q[k] && q[k] <= box_hi_[k];
+    if (!inside || orient3d(pa, pb, pc, q) <= 0) continue;
+    const double shape = shape_measure(pa, pb, pc, q);
+    if (shape < options_.min_quality) continue;
+    const int closed = (front_.find_face(b, c, v) != kNoIndex) + (front_.find_face(a, v, c) != kNoIndex) +
+                       (front_.find_face(a, b, v) != kNoIndex);
+    targets_.push_back({shape * (1 + closed), v});
+  }
+  std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {
+    return x.score != y.score ? x.score > y.score : x.vertex < y.vertex;
+  });
+  for (const Target& target : targets_) {
+    ++counts_.checks;
+    if (check_removal(front_, f, target.vertex, near_) == RemovalVerdict::kValid) {
+      make_tet(f, target.vertex);
+      return true;
+    }
+  }
+  return false;
+}
+
+RemovalCounts Remover::run() {
+  const size_t have = out_.num_vertices();
+  PARTET_ASSERT(have <= front_.num_vertices(), "output mesh has more vertices than the front");
+  const bool ids = out_.global_ids.size() == have;
+  out_.xyz.insert(out_.xyz.end(), front_.xyz().begin() + 3 * have, front_.xyz().end());
+  if (ids) out_.global_ids.insert(out_.global_ids.end(), front_.global_ids().begin() + have, front_.global_ids().end());
+
+  failed_at_.assign(front_.num_face_slots(), kNeverFailed);
+  foreign_.assign(front_.num_face_slots(), 0);
+  for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
+    if (front_.alive(f)) queue_.push_back(f);
+  std::vector<uint32_t> waiting;
+  while (!queue_.empty()) {
+    ++counts_.passes;
+    const size_t made_before = counts_.tets;
+    waiting.clear();
+    for (size_t i = 0; i < queue_.size(); ++i) {
+      const uint32_t f = queue_[i];
+      if (!front_.alive(f)) continue;
+      neighbourhood(f);
+      if (neighbourhood_foreign()) {
+        foreign_[f] = 1;
+        continue;
+      }
+      if (failed_at_[f] != kNeverFailed && !neighbourhood_changed_since(failed_at_[f])) {
+        waiting.push_back(f);
+        continue;
+      }
+      if (!try_face(f)) {
+        failed_at_[f] = front_.changes();
+        waiting.push_back(f);
+      }
+    }
+    if (counts_.tets == made_before) break;
+    queue_.swap(waiting);
+  }
+  for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
+    if (front_.alive(f)) {
+      ++counts_.faces_left;
+      counts_.foreign_faces += foreign_[f];
+    }
+  return counts_;
+}
+
+}  // namespace
+
+RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
+                                          const RemovalOptions& options) {
+  PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
+  return Remover(front, tree, root, out, options).run();
+}
+
+}  // namespace partet

@@ -1,0 +1,64 @@
+// Tree-supported face removals (paper §2.3, pipeline steps 4, 6, 8): each
+// alive front face (the base) is connected to an existing front vertex,
+// making a tet, when a valid one is found; no vertex is added.
+//
+// For a base face (a, b, c):
+//  - neighbourhood: the box centroid ± reach × longest edge, clipped to the
+//    root cube, and the leaves over it (LeafRangeQuery). When one of them
+//    is owned by another rank the face is skipped for this call (removals
+//    never communicate: it waits for a repartitioning);
+//  - targets: the front vertices of those leaves that lie in the box (so
+//    that every tet, hence everything its checks need, stays inside the
+//    box) with orient3d(a, b, c, p) > 0;
+//  - order: by score = q × (1 + closed) descending, then vertex index, where
+//    q = √2 det / l_rms³ (6 × volume over the cube of the root mean square
+//    edge, 1 for the regular tet) and `closed` counts the tet's other faces
+//    whose twins are alive (it closes them): closing the front is preferred
+//    unless the shape is much worse. Targets with q < min_quality are
+//    dropped;
+//  - the first target passing check_removal (removal_checks.hpp) makes the
+//    tet (a, b, c, p) (positively oriented), appended to `out`; the front
+//    is updated and boundary or too-close leaves whose front became empty
+//    are reclassified kDone.
+//
+// Order and progress. A FIFO queue is seeded with the alive faces in index
+// order; faces made by removals are appended to it. A face that finds no
+// valid target waits for the next pass, and is retried there only when one
+// of its neighbourhood leaves changed since it failed (its answer depends
+// on nothing else). A pass that makes no tet ends the call. Termination:
+// every tet has positive volume inside the unmeshed region and the tets
+// made are interior-disjoint tets on a fixed finite vertex set, so a call
+// makes finitely many tets, and each further pass makes at least one.
+// Deterministic: no hash iteration, ties broken by index.
+#pragma once
+
+#include <cstddef>
+
+#include "core/tet_mesh.hpp"
+#include "front/front.hpp"
+#include "octree/octree.hpp"
+
+namespace partet {
+
+struct RemovalOptions {
+  int rank = 0;             // leaves owned by another rank are off limits
+  double reach = 2.0;       // neighbourhood half-size in longest base edges
+  double min_quality = 0;   // targets whose tet has q below this are ignored
+};
+
+struct RemovalCounts {
+  size_t tets = 0;           // tets made
+  size_t faces_left = 0;     // alive faces at the end
+  size_t foreign_faces = 0;  // of those, faces skipped for a leaf owned elsewhere
+  size_t passes = 0;
+  size_t checks = 0;         // candidate tets checked
+};
+
+// `front` must be built over `tree` and `root`. `out` receives the tets,
+// numbered in the front's vertex numbering: its vertices must be a prefix
+// of the front's (e.g. the template core, or empty); the missing front
+// vertices are appended (coordinates, and global ids when `out` has them).
+RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root,
+                                          TetMesh& out, const RemovalOptions& options = {});
+
+}  // namespace partet

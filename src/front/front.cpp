@@ -1,0 +1,207 @@
+// The live front: construction from the initial front, the hashes and the
+// leaf index kept in step with every applied tet (see front.hpp).
+#include "front/front.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+
+namespace partet {
+
+namespace {
+
+std::array<uint32_t, 3> sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
+  std::array<uint32_t, 3> k = {a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+uint64_t edge_key(uint32_t a, uint32_t b) {
+  if (a > b) std::swap(a, b);
+  return (uint64_t{a} << 32) | b;
+}
+
+}  // namespace
+
+size_t Front::TripleHash::operator()(const std::array<uint32_t, 3>& k) const {
+  uint64_t h = k[0];
+  h = h * 0x9E3779B97F4A7C15ull ^ k[1];
+  h = h * 0x9E3779B97F4A7C15ull ^ k[2];
+  return static_cast<size_t>(h ^ (h >> 29));
+}
+
+Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root)
+    : root_(root),
+      query_(tree),
+      xyz_(initial.xyz),
+      global_ids_(initial.global_ids),
+      vertex_leaf_(initial.vertex_leaf),
+      vertex_uses_(initial.vertex_leaf.size(), 0),
+      vertex_prev_(initial.vertex_leaf.size(), kNoIndex),
+      vertex_next_(initial.vertex_leaf.size(), kNoIndex),
+      leaf_vertex_head_(tree.size(), kNoIndex),
+      leaf_entry_head_(tree.size(), kNoIndex),
+      leaf_changed_(tree.size(), 0) {
+  PARTET_ASSERT(initial.xyz.size() == 3 * initial.vertex_leaf.size(), "initial front vertex arrays disagree");
+  PARTET_ASSERT(initial.vertex_leaf.size() < kNoIndex, "too many front vertices");
+  for (uint32_t leaf : vertex_leaf_) PARTET_ASSERT(leaf < tree.size(), "front vertex leaf out of range");
+  const size_t n = initial.num_faces();
+  faces_.reserve(3 * n);
+  alive_.reserve(n);
+  face_of_triple_.reserve(2 * n);
+  edge_uses_.reserve(3 * n);
+  for (size_t f = 0; f < n; ++f) {
+    const uint32_t* t = &initial.faces[3 * f];
+    PARTET_ASSERT(find_face(t[0], t[1], t[2]) == kNoIndex, "initial front has two faces on one vertex triple");
+    add_face(t[0], t[1], t[2]);
+  }
+}
+
+uint32_t Front::find_face(uint32_t a, uint32_t b, uint32_t c) const {
+  auto it = face_of_triple_.find(sorted_triple(a, b, c));
+  return it == face_of_triple_.end() ? kNoIndex : it->second;
+}
+
+uint32_t Front::edge_uses(uint32_t a, uint32_t b) const {
+  auto it = edge_uses_.find(edge_key(a, b));
+  return it == edge_uses_.end() ? 0 : it->second;
+}
+
+void Front::change_edge(uint32_t a, uint32_t b, int delta) {
+  const uint64_t key = edge_key(a, b);
+  if (delta > 0) {
+    ++edge_uses_[key];
+    return;
+  }
+  auto it = edge_uses_.find(key);
+  PARTET_ASSERT(it != edge_uses_.end() && it->second > 0, "front edge count underflow");
+  if (--it->second == 0) edge_uses_.erase(it);
+}
+
+void Front::use_vertex(uint32_t v) {
+  if (vertex_uses_[v]++ > 0) return;
+  const uint32_t leaf = vertex_leaf_[v];
+  vertex_prev_[v] = kNoIndex;
+  vertex_next_[v] = leaf_vertex_head_[leaf];
+  if (vertex_next_[v] != kNoIndex) vertex_prev_[vertex_next_[v]] = v;
+  leaf_vertex_head_[leaf] = v;
+  leaf_changed_[leaf] = changes_;
+}
+
+void Front::release_vertex(uint32_t v, std::vector<uint32_t>& shrunk) {
+  PARTET_ASSERT(vertex_uses_[v] > 0, "front vertex use count underflow");
+  if (--vertex_uses_[v] > 0) return;
+  const uint32_t leaf = vertex_leaf_[v];
+  if (vertex_prev_[v] != kNoIndex)
+    vertex_next_[vertex_prev_[v]] = vertex_next_[v];
+  else
+    leaf_vertex_head_[leaf] = vertex_next_[v];
+  if (vertex_next_[v] != kNoIndex) vertex_prev_[vertex_next_[v]] = vertex_prev_[v];
+  vertex_prev_[v] = vertex_next_[v] = kNoIndex;
+  leaf_changed_[leaf] = changes_;
+  shrunk.push_back(leaf);
+}
+
+uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
+  PARTET_ASSERT(faces_.size() / 3 < kNoIndex - 1, "too many front faces");
+  const uint32_t f = static_cast<uint32_t>(alive_.size());
+  faces_.insert(faces_.end(), {a, b, c});
+  alive_.push_back(1);
+  face_first_entry_.push_back(kNoIndex);
+  ++alive_count_;
+  face_of_triple_.emplace(sorted_triple(a, b, c), f);
+  change_edge(a, b, 1);
+  change_edge(b, c, 1);
+  change_edge(c, a, 1);
+  use_vertex(a);
+  use_vertex(b);
+  use_vertex(c);
+
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
+    hi[k] = std::max({point(a)[k], point(b)[k], point(c)[k]});
+  }
+  uint32_t glo[3], ghi[3];
+  grid_range(root_, lo, hi, glo, ghi);
+  query_.leaves_in_range(glo, ghi, leaves_scratch_);
+  for (size_t leaf : leaves_scratch_) {
+    uint32_t e;
+    if (free_entry_ != kNoIndex) {
+      e = free_entry_;
+      free_entry_ = entry_next_[e];
+    } else {
+      PARTET_ASSERT(entry_face_.size() < kNoIndex - 1, "too many front face entries");
+      e = static_cast<uint32_t>(entry_face_.size());
+      entry_face_.push_back(0);
+      entry_leaf_.push_back(0);
+      entry_prev_.push_back(0);
+      entry_next_.push_back(0);
+      entry_chain_.push_back(0);
+    }
+    entry_face_[e] = f;
+    entry_leaf_[e] = static_cast<uint32_t>(leaf);
+    entry_prev_[e] = kNoIndex;
+    entry_next_[e] = leaf_entry_head_[leaf];
+    if (entry_next_[e] != kNoIndex) entry_prev_[entry_next_[e]] = e;
+    leaf_entry_head_[leaf] = e;
+    entry_chain_[e] = face_first_entry_[f];
+    face_first_entry_[f] = e;
+    leaf_changed_[leaf] = changes_;
+  }
+  return f;
+}
+
+void Front::close_face(uint32_t f, std::vector<uint32_t>& shrunk) {
+  PARTET_ASSERT(alive_[f], "closing a closed front face");
+  const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
+  alive_[f] = 0;
+  --alive_count_;
+  face_of_triple_.erase(sorted_triple(a, b, c));
+  change_edge(a, b, -1);
+  change_edge(b, c, -1);
+  change_edge(c, a, -1);
+  uint32_t e = face_first_entry_[f];
+  while (e != kNoIndex) {
+    const uint32_t leaf = entry_leaf_[e];
+    if (entry_prev_[e] != kNoIndex)
+      entry_next_[entry_prev_[e]] = entry_next_[e];
+    else
+      leaf_entry_head_[leaf] = entry_next_[e];
+    if (entry_next_[e] != kNoIndex) entry_prev_[entry_next_[e]] = entry_prev_[e];
+    leaf_changed_[leaf] = changes_;
+    shrunk.push_back(leaf);
+    const uint32_t next = entry_chain_[e];
+    entry_next_[e] = free_entry_;
+    free_entry_ = e;
+    e = next;
+  }
+  face_first_entry_[f] = kNoIndex;
+  release_vertex(a, shrunk);
+  release_vertex(b, shrunk);
+  release_vertex(c, shrunk);
+}
+
+int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
+  PARTET_ASSERT(f < alive_.size() && alive_[f], "tet on a closed front face");
+  ++changes_;
+  const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
+  // Add before closing, so that vertices kept by the new faces never leave
+  // their leaf's list.
+  const uint32_t sides[3][3] = {{b, c, p}, {a, p, c}, {a, b, p}};
+  uint32_t twins[3];
+  int closed = 0;
+  for (int s = 0; s < 3; ++s) {
+    twins[s] = find_face(sides[s][0], sides[s][1], sides[s][2]);
+    if (twins[s] == kNoIndex) added.push_back(add_face(sides[s][0], sides[s][1], sides[s][2]));
+  }
+  close_face(f, shrunk);
+  for (int s = 0; s < 3; ++s)
+    if (twins[s] != kNoIndex) {
+      close_face(twins[s], shrunk);
+      ++closed;
+    }
+  return closed;
+}
+
+}  // namespace partet

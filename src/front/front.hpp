@@ -1,0 +1,142 @@
+// The live front during face removals: oriented triangles facing the
+// unmeshed region, which shrink as tets are made.
+//
+// Contents (flat arrays, indices stable for the front's lifetime):
+//  - vertices: the InitialFront's joint numbering unchanged (coordinates,
+//    global ids, the leaf whose half-open box contains each); a vertex is a
+//    front vertex while at least one alive face uses it;
+//  - faces: 3 vertex indices each, counterclockwise seen from the unmeshed
+//    region (normal (b-a)x(c-a) into it), with an alive flag; closed faces
+//    stay as dead entries, new faces are appended;
+//  - a hash from the sorted vertex triple to the alive face with those
+//    vertices (at most one: a face whose reverse is alive closes both), and
+//    a hash from the sorted vertex pair to the number of alive faces using
+//    that edge (front edges);
+//  - the leaf index: every alive face is listed in every leaf that contains
+//    a grid cell of grid_range(face's bounding box). A face meeting a box B
+//    is then listed in at least one leaf of grid_range(B) (a point common to
+//    both boxes lies in a leaf of both ranges), so gathering the faces of
+//    the leaves over B finds every face that can meet B; the validity
+//    checks need exactly that. Front vertices are listed in the leaf
+//    containing them. Both lists are doubly linked head/next lists in flat
+//    arrays (face entries come from a pool with a free list).
+// Every change stamps the leaves whose lists changed with a change counter,
+// so callers can tell whether the front near a place changed since a time.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "front/initial_front.hpp"
+#include "octree/octree.hpp"
+#include "octree/range_query.hpp"
+
+namespace partet {
+
+constexpr uint32_t kNoIndex = UINT32_MAX;
+
+class Front {
+ public:
+  // Copies the vertices and faces of `initial`, which must come from
+  // make_initial_front over `tree` and `root`. Keeps a range query over
+  // `tree`, whose leaves (keys and levels) must not change while the front
+  // is used; leaf classes and owners may.
+  Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root);
+
+  const RootCube& root() const { return root_; }
+  const LeafRangeQuery& query() const { return query_; }
+
+  size_t num_vertices() const { return vertex_leaf_.size(); }
+  const double* point(uint32_t v) const { return &xyz_[3 * size_t{v}]; }
+  const std::vector<double>& xyz() const { return xyz_; }
+  const std::vector<uint64_t>& global_ids() const { return global_ids_; }
+  uint32_t vertex_leaf(uint32_t v) const { return vertex_leaf_[v]; }
+  // Number of alive faces using vertex v (0: not a front vertex).
+  uint32_t vertex_uses(uint32_t v) const { return vertex_uses_[v]; }
+
+  // Face slots, alive or closed.
+  size_t num_face_slots() const { return alive_.size(); }
+  size_t num_alive_faces() const { return alive_count_; }
+  bool alive(uint32_t f) const { return alive_[f] != 0; }
+  const uint32_t* face(uint32_t f) const { return &faces_[3 * size_t{f}]; }
+
+  // The alive face with vertices {a, b, c} in any order, or kNoIndex.
+  uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
+  // Number of alive faces using edge {a, b} (0: not a front edge).
+  uint32_t edge_uses(uint32_t a, uint32_t b) const;
+
+  // Leaf index. Faces listed in `leaf`: first_face_entry, then next_entry
+  // until kNoIndex; entry_face gives the face. Front vertices in `leaf`:
+  // first_vertex, then next_vertex until kNoIndex.
+  uint32_t first_face_entry(size_t leaf) const { return leaf_entry_head_[leaf]; }
+  uint32_t next_entry(uint32_t e) const { return entry_next_[e]; }
+  uint32_t entry_face(uint32_t e) const { return entry_face_[e]; }
+  uint32_t first_vertex(size_t leaf) const { return leaf_vertex_head_[leaf]; }
+  uint32_t next_vertex(uint32_t v) const { return vertex_next_[v]; }
+  // True when no face is listed in the leaf and no front vertex lies in it.
+  bool leaf_front_empty(size_t leaf) const {
+    return leaf_entry_head_[leaf] == kNoIndex && leaf_vertex_head_[leaf] == kNoIndex;
+  }
+  // Value of the change counter when the leaf's lists last changed (0: never).
+  uint64_t leaf_changed(size_t leaf) const { return leaf_changed_[leaf]; }
+  // Number of tets applied so far (the change counter).
+  uint64_t changes() const { return changes_; }
+
+  // Applies the positively oriented tet (a, b, c, p) built on alive face f
+  // = (a, b, c) (orient3d(a, b, c, p) > 0 is the caller's check): closes f;
+  // each of the new faces (b, c, p), (a, p, c), (a, b, p) (oriented away
+  // from the tet, i.e. into the unmeshed region) closes its reverse when
+  // that is alive, else is added. The caller guarantees no new face
+  // duplicates an alive face with the same orientation. Appends the new
+  // faces' indices to `added` and the leaves that lost a face or a vertex
+  // to `shrunk` (with repetitions). Returns the number of faces closed
+  // besides f.
+  int apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
+
+ private:
+  uint32_t add_face(uint32_t a, uint32_t b, uint32_t c);
+  void close_face(uint32_t f, std::vector<uint32_t>& shrunk);
+  void use_vertex(uint32_t v);
+  void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
+  void change_edge(uint32_t a, uint32_t b, int delta);
+
+  const RootCube root_;
+  LeafRangeQuery query_;
+  std::vector<size_t> leaves_scratch_;
+
+  std::vector<double> xyz_;
+  std::vector<uint64_t> global_ids_;
+  std::vector<uint32_t> vertex_leaf_;
+  std::vector<uint32_t> vertex_uses_;
+  std::vector<uint32_t> vertex_prev_;  // in the leaf's vertex list
+  std::vector<uint32_t> vertex_next_;
+  std::vector<uint32_t> leaf_vertex_head_;
+
+  std::vector<uint32_t> faces_;
+  std::vector<uint8_t> alive_;
+  std::vector<uint32_t> face_first_entry_;  // chain of the face's entries via entry_chain_
+  size_t alive_count_ = 0;
+
+  // Face entry pool: one entry per (face, leaf).
+  std::vector<uint32_t> entry_face_;
+  std::vector<uint32_t> entry_leaf_;
+  std::vector<uint32_t> entry_prev_;   // in the leaf's list
+  std::vector<uint32_t> entry_next_;   // in the leaf's list; in the free list when free
+  std::vector<uint32_t> entry_chain_;  // next entry of the same face
+  uint32_t free_entry_ = kNoIndex;
+  std::vector<uint32_t> leaf_entry_head_;
+
+  std::vector<uint64_t> leaf_changed_;
+  uint64_t changes_ = 0;
+
+  struct TripleHash {
+    size_t operator()(const std::array<uint32_t, 3>& k) const;
+  };
+  std::unordered_map<std::array<uint32_t, 3>, uint32_t, TripleHash> face_of_triple_;
+  std::unordered_map<uint64_t, uint32_t> edge_uses_;
+};
+
+}  // namespace partet

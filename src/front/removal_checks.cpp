@@ -1,0 +1,211 @@
+// Face removal validity checks (see removal_checks.hpp): bounding boxes
+// (exact comparisons) reject far entities cheaply, exact predicates decide
+// the rest.
+#include "front/removal_checks.hpp"
+
+#include <algorithm>
+
+#include "core/intersections.hpp"
+#include "core/predicates.hpp"
+
+namespace partet {
+
+namespace {
+
+struct Box {
+  double lo[3], hi[3];
+};
+
+void append_box(const double* const* p, int n, std::vector<double>& boxes) {
+  for (int k = 0; k < 3; ++k) {
+    double lo = p[0][k];
+    for (int i = 1; i < n; ++i) lo = std::min(lo, p[i][k]);
+    boxes.push_back(lo);
+  }
+  for (int k = 0; k < 3; ++k) {
+    double hi = p[0][k];
+    for (int i = 1; i < n; ++i) hi = std::max(hi, p[i][k]);
+    boxes.push_back(hi);
+  }
+}
+
+// Box b against the box stored at `stored` (min xyz, max xyz).
+bool box_meets_stored(const Box& b, const double* stored) {
+  for (int k = 0; k < 3; ++k)
+    if (b.hi[k] < stored[k] || stored[3 + k] < b.lo[k]) return false;
+  return true;
+}
+
+Box box_of(const double* const* p, int n) {
+  Box b;
+  for (int k = 0; k < 3; ++k) {
+    b.lo[k] = b.hi[k] = p[0][k];
+    for (int i = 1; i < n; ++i) {
+      b.lo[k] = std::min(b.lo[k], p[i][k]);
+      b.hi[k] = std::max(b.hi[k], p[i][k]);
+    }
+  }
+  return b;
+}
+
+bool point_in_box(const double* p, const Box& b) {
+  for (int k = 0; k < 3; ++k)
+    if (p[k] < b.lo[k] || b.hi[k] < p[k]) return false;
+  return true;
+}
+
+// Segment (ids u, v) against triangle (ids t[0..2]) with the shared-vertex
+// rules: true when they meet other than at shared vertices or along a
+// shared edge.
+bool segment_conflicts(const Front& front, uint32_t u, uint32_t v, const uint32_t* t) {
+  int shared_u = -1, shared_v = -1;
+  for (int k = 0; k < 3; ++k) {
+    if (t[k] == u) shared_u = k;
+    if (t[k] == v) shared_v = k;
+  }
+  if (shared_u >= 0 && shared_v >= 0) return false;
+  if (shared_u < 0 && shared_v < 0)
+    return segment_triangle_intersect(front.point(u), front.point(v), front.point(t[0]), front.point(t[1]),
+                                      front.point(t[2]));
+  const int k = shared_u >= 0 ? shared_u : shared_v;
+  const uint32_t s = t[k], o = shared_u >= 0 ? v : u;
+  return meets_beyond_shared_vertex(front.point(s), front.point(o), front.point(t[(k + 1) % 3]),
+                                    front.point(t[(k + 2) % 3]));
+}
+
+}  // namespace
+
+bool meets_beyond_shared_vertex(const double* s, const double* o, const double* t1, const double* t2) {
+  if (orient3d(s, t1, t2, o) != 0) return false;  // the segment meets the plane at s only
+  // Coplanar: project along an axis where the triangle stays a triangle
+  // (the projection is then one-to-one on the plane); the segment leaves s
+  // into the triangle exactly when o lies in the closed angle t1-s-t2.
+  for (int drop = 0; drop < 3; ++drop) {
+    const int turn = orient2d_projected(s, t1, t2, drop);
+    if (turn == 0) continue;
+    return orient2d_projected(s, t1, o, drop) * turn >= 0 && orient2d_projected(s, o, t2, drop) * turn >= 0;
+  }
+  return true;  // degenerate triangle: outside the contract, refuse
+}
+
+void gather_near_front(const Front& front, const std::vector<size_t>& leaves, NearFront& near) {
+  near.faces.clear();
+  near.vertices.clear();
+  near.edges.clear();
+  near.face_boxes.clear();
+  near.edge_boxes.clear();
+  for (size_t leaf : leaves) {
+    for (uint32_t e = front.first_face_entry(leaf); e != kNoIndex; e = front.next_entry(e))
+      near.faces.push_back(front.entry_face(e));
+    for (uint32_t v = front.first_vertex(leaf); v != kNoIndex; v = front.next_vertex(v)) near.vertices.push_back(v);
+  }
+  std::sort(near.faces.begin(), near.faces.end());
+  near.faces.erase(std::unique(near.faces.begin(), near.faces.end()), near.faces.end());
+  std::sort(near.vertices.begin(), near.vertices.end());
+  for (uint32_t f : near.faces) {
+    const uint32_t* t = front.face(f);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
+      near.edges.push_back((uint64_t{a} << 32) | b);
+    }
+  }
+  std::sort(near.edges.begin(), near.edges.end());
+  near.edges.erase(std::unique(near.edges.begin(), near.edges.end()), near.edges.end());
+  for (uint32_t f : near.faces) {
+    const uint32_t* t = front.face(f);
+    const double* p[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
+    append_box(p, 3, near.face_boxes);
+  }
+  for (uint64_t key : near.edges) {
+    const double* p[2] = {front.point(static_cast<uint32_t>(key >> 32)), front.point(static_cast<uint32_t>(key))};
+    append_box(p, 2, near.edge_boxes);
+  }
+}
+
+const char* verdict_name(RemovalVerdict v) {
+  switch (v) {
+    case RemovalVerdict::kValid: return "valid";
+    case RemovalVerdict::kNotPositive: return "not positive";
+    case RemovalVerdict::kDuplicateFace: return "duplicate face";
+    case RemovalVerdict::kVertexInside: return "vertex inside";
+    case RemovalVerdict::kEdgeCrossesFace: return "new edge crosses a front face";
+    case RemovalVerdict::kFaceCrossesEdge: return "new face crosses a front edge";
+  }
+  return "?";
+}
+
+RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near) {
+  const uint32_t* base = front.face(f);
+  const uint32_t a = base[0], b = base[1], c = base[2];
+  if (p == a || p == b || p == c) return RemovalVerdict::kNotPositive;
+  const double *pa = front.point(a), *pb = front.point(b), *pc = front.point(c), *pp = front.point(p);
+  if (orient3d(pa, pb, pc, pp) <= 0) return RemovalVerdict::kNotPositive;
+
+  // New faces (outward from the tet) and whether each is new or closes a twin.
+  const uint32_t sides[3][3] = {{b, c, p}, {a, p, c}, {a, b, p}};
+  bool new_side[3];
+  for (int s = 0; s < 3; ++s) {
+    const uint32_t g = front.find_face(sides[s][0], sides[s][1], sides[s][2]);
+    new_side[s] = g == kNoIndex;
+    if (g == kNoIndex) continue;
+    // Same orientation when the alive face is a rotation of the side.
+    const uint32_t* t = front.face(g);
+    for (int r = 0; r < 3; ++r)
+      if (t[r] == sides[s][0] && t[(r + 1) % 3] == sides[s][1]) return RemovalVerdict::kDuplicateFace;
+  }
+  const uint32_t ends[3] = {a, b, c};
+  bool new_edge[3];
+  for (int k = 0; k < 3; ++k) new_edge[k] = front.edge_uses(p, ends[k]) == 0;
+
+  const double* corners[4] = {pa, pb, pc, pp};
+  const Box tet_box = box_of(corners, 4);
+
+  // (i) Front vertices in the closed tet.
+  for (uint32_t v : near.vertices) {
+    if (v == a || v == b || v == c || v == p) continue;
+    const double* q = front.point(v);
+    if (!point_in_box(q, tet_box)) continue;
+    if (orient3d(pa, pc, pb, q) <= 0 && orient3d(pb, pc, pp, q) <= 0 && orient3d(pa, pp, pc, q) <= 0 &&
+        orient3d(pa, pb, pp, q) <= 0)
+      return RemovalVerdict::kVertexInside;
+  }
+
+  // (ii) New edges against front faces.
+  if (new_edge[0] || new_edge[1] || new_edge[2]) {
+    Box edge_box[3];
+    for (int k = 0; k < 3; ++k) {
+      const double* e[2] = {pp, front.point(ends[k])};
+      edge_box[k] = box_of(e, 2);
+    }
+    for (size_t i = 0; i < near.faces.size(); ++i) {
+      const double* face_box = &near.face_boxes[6 * i];
+      if (!box_meets_stored(tet_box, face_box)) continue;
+      const uint32_t* t = front.face(near.faces[i]);
+      for (int k = 0; k < 3; ++k) {
+        if (!new_edge[k] || !box_meets_stored(edge_box[k], face_box)) continue;
+        if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
+      }
+    }
+  }
+
+  // (iii) New faces against front edges.
+  if (new_side[0] || new_side[1] || new_side[2]) {
+    Box side_box[3];
+    for (int s = 0; s < 3; ++s) {
+      const double* sp[3] = {front.point(sides[s][0]), front.point(sides[s][1]), front.point(sides[s][2])};
+      side_box[s] = box_of(sp, 3);
+    }
+    for (size_t i = 0; i < near.edges.size(); ++i) {
+      const double* edge_box = &near.edge_boxes[6 * i];
+      if (!box_meets_stored(tet_box, edge_box)) continue;
+      const uint32_t u = static_cast<uint32_t>(near.edges[i] >> 32), w = static_cast<uint32_t>(near.edges[i]);
+      for (int s = 0; s < 3; ++s) {
+        if (!new_side[s] || !box_meets_stored(side_box[s], edge_box)) continue;
+        if (segment_conflicts(front, u, w, sides[s])) return RemovalVerdict::kFaceCrossesEdge;
+      }
+    }
+  }
+  return RemovalVerdict::kValid;
+}
+
+}  // namespace partet

@@ -1,0 +1,69 @@
+// Exact validity of a face removal: may the tet (a, b, c, p) be built on
+// the alive front face (a, b, c) without overlapping what is meshed or
+// crossing the front? Every decision is an exact predicate.
+//
+// The tet's new faces, oriented away from it (into the unmeshed region),
+// are (b, c, p), (a, p, c), (a, b, p); a new face whose reverse is alive
+// closes that face and is not new; its new edges are p-a, p-b, p-c unless
+// already front edges. The removal is valid when:
+//  - p is not a, b or c and orient3d(a, b, c, p) > 0;
+//  - no new face duplicates an alive face with the same orientation (the
+//    tet would lie on that face's meshed side);
+//  (i)   no front vertex other than a, b, c, p lies in the closed tet;
+//  (ii)  no new edge meets a front face other than at a shared vertex: a
+//        face sharing one endpoint s may touch the edge at s only (the edge
+//        is coplanar with the face and leaves s into the face's closed
+//        angle at s otherwise); a face containing both endpoints would make
+//        the edge a front edge;
+//  (iii) no new face meets a front edge other than at shared vertices or
+//        along the edge itself when it is one of the face's edges (same
+//        shared-vertex rule as (ii)).
+// With a valid (non self-intersecting) front these exclude every overlap:
+// a front face meeting a new face only through their interiors from a
+// shared vertex must leave one of them through an edge, which (ii), (iii)
+// or the front's own validity rules out.
+//
+// The front entities checked are those of a NearFront, which must contain
+// every alive face (and its edges) and every front vertex that can meet the
+// tet's bounding box: gather them from the leaves over any box containing
+// the tet (Front's leaf index guarantees the rest).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "front/front.hpp"
+
+namespace partet {
+
+struct NearFront {
+  std::vector<uint32_t> faces;       // alive faces, ascending
+  std::vector<uint32_t> vertices;    // front vertices, ascending
+  std::vector<uint64_t> edges;       // edges of `faces` as (min << 32) | max, ascending
+  std::vector<double> face_boxes;    // 6 per face: bounding box min xyz, max xyz
+  std::vector<double> edge_boxes;    // 6 per edge, the same
+};
+
+// Replaces `near` with the faces listed in `leaves` (Front's leaf index),
+// their edges, and the front vertices of those leaves.
+void gather_near_front(const Front& front, const std::vector<size_t>& leaves, NearFront& near);
+
+enum class RemovalVerdict : uint8_t {
+  kValid = 0,
+  kNotPositive,      // p is a vertex of the face, or on its back side or plane
+  kDuplicateFace,    // a new face is an alive face with the same orientation
+  kVertexInside,     // (i)
+  kEdgeCrossesFace,  // (ii)
+  kFaceCrossesEdge,  // (iii)
+};
+
+const char* verdict_name(RemovalVerdict v);
+
+// Validity of the tet on alive face f with apex p, against `near`.
+RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near);
+
+// Closed segment s-o against closed triangle (s, t1, t2) sharing vertex s:
+// true when they meet anywhere other than at s.
+bool meets_beyond_shared_vertex(const double* s, const double* o, const double* t1, const double* t2);
+
+}  // namespace partet

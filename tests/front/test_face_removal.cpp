@@ -1,0 +1,158 @@
+// Tree-supported face removals after the real pipeline (sizes, octree,
+// balance, classification, templates, initial front): a single tet and a
+// cube close completely; on the corpus shapes the core plus the new tets
+// is always a valid partial mesh (and fills the surface when the front is
+// empty); faces near leaves owned by another rank wait, and a later call
+// with the leaves back on this rank continues the same front.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "check/validate.hpp"
+#include "front/face_removal.hpp"
+#include "front/front.hpp"
+#include "front/initial_front.hpp"
+#include "io/mesh_file.hpp"
+#include "octree/balance.hpp"
+#include "octree/build.hpp"
+#include "octree/classify.hpp"
+#include "octree/sizing.hpp"
+#include "surface/diagnose.hpp"
+#include "templates/template_mesh.hpp"
+#include "test_support.hpp"
+
+namespace partet::test {
+namespace {
+
+struct Meshing {
+  SurfaceMesh surface;
+  RootCube root;
+  LinearOctree tree;
+  TemplateCore core;
+  InitialFront initial;
+};
+
+// The pipeline of src/pipeline/mesh_command.cpp up to the initial front.
+void prepare(Meshing& m, SurfaceMesh surface, double size_factor) {
+  m.surface = std::move(surface);
+  SurfaceSummary summary = diagnose_surface(m.surface, "test surface");
+  m.root = make_root_cube(summary.bbox);
+  SizingOptions sizing_options;
+  sizing_options.size_factor = size_factor;
+  VertexSizing sizing = size_vertices(m.surface, m.root, sizing_options);
+  m.tree = build_octree(sizing.grid, sizing.level);
+  refine_for_triangles(m.tree, m.surface, m.root, sizing.level);
+  balance_octree(m.tree);
+  classify_leaves(m.tree, m.surface, m.root, sizing.size);
+  m.core = template_interior(m.tree, m.root);
+  m.initial = make_initial_front(m.tree, m.root, m.core, m.surface);
+}
+
+// Core plus new tets valid as a partial mesh; filling the surface when the
+// front is empty.
+void expect_valid(const Meshing& m, const TetMesh& out, size_t faces_left, const std::string& what) {
+  ValidationResult partial = validate_mesh(out, nullptr);
+  EXPECT_TRUE(partial.valid) << what << ": " << format_text(partial);
+  if (faces_left == 0) {
+    ValidationResult full = validate_mesh(out, &m.surface);
+    EXPECT_TRUE(full.valid) << what << ": " << format_text(full);
+  }
+}
+
+SurfaceMesh tet_surface() {
+  SurfaceMesh s;
+  s.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  s.tris = {1, 2, 3, 0, 3, 2, 0, 1, 3, 0, 2, 1};
+  return s;
+}
+
+TEST(FrontRemoval, SingleTetSurfaceMakesOneTet) {
+  Meshing m;
+  prepare(m, tet_surface(), 1);
+  ASSERT_EQ(m.core.mesh.num_tets(), 0u);
+  Front front(m.initial, m.tree, m.root);
+  TetMesh out = m.core.mesh;
+  RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out);
+  EXPECT_EQ(n.tets, 1u);
+  EXPECT_EQ(n.faces_left, 0u);
+  EXPECT_EQ(front.num_alive_faces(), 0u);
+  expect_valid(m, out, n.faces_left, "tet");
+  for (size_t leaf = 0; leaf < m.tree.size(); ++leaf) {
+    EXPECT_TRUE(front.leaf_front_empty(leaf));
+    EXPECT_NE(m.tree.cls[leaf], LeafClass::kBoundary) << "leaf " << leaf;
+  }
+}
+
+TEST(FrontRemoval, CubeSurfaceIsFilled) {
+  for (double factor : {1.0, 0.25}) {
+    Meshing m;
+    prepare(m, box_surface(), factor);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out);
+    EXPECT_GT(n.tets, 0u);
+    EXPECT_EQ(n.faces_left, front.num_alive_faces());
+    EXPECT_EQ(out.num_tets(), m.core.mesh.num_tets() + n.tets);
+    if (factor == 1.0) {
+      EXPECT_EQ(n.faces_left, 0u);
+    }
+    expect_valid(m, out, n.faces_left, "cube x" + std::to_string(factor));
+  }
+}
+
+TEST(FrontRemoval, CorpusShapesStayValid) {
+  for (const char* name : {"octahedron.off", "icosahedron.off", "ellipsoid.off", "sphere966.off"})
+    for (double factor : {1.0, 0.5}) {
+      Meshing m;
+      prepare(m, read_surface_file(data_path(std::string("good/") + name)), factor);
+      Front front(m.initial, m.tree, m.root);
+      TetMesh out = m.core.mesh;
+      const auto start = std::chrono::steady_clock::now();
+      RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::printf("[ corpus   ] %-16s x%.1f: front %zu -> %zu faces, %zu tets, %zu passes, %zu checks, %.3f s"
+                  " (%.0f tets/s)\n",
+                  name, factor, m.initial.num_faces(), n.faces_left, n.tets, n.passes, n.checks, seconds,
+                  n.tets / std::max(seconds, 1e-9));
+      EXPECT_EQ(n.foreign_faces, 0u);
+      EXPECT_LT(n.faces_left, m.initial.num_faces()) << name;
+      expect_valid(m, out, n.faces_left, std::string(name) + " x" + std::to_string(factor));
+    }
+}
+
+TEST(FrontRemoval, ForeignLeavesWait) {
+  Meshing m;
+  prepare(m, read_surface_file(data_path("good/sphere966.off")), 1);
+  // Leaves in the upper half (anchor z at or above the middle) belong to rank 1.
+  for (size_t leaf = 0; leaf < m.tree.size(); ++leaf) {
+    uint32_t x, y, z;
+    m.tree.anchor(leaf, x, y, z);
+    if (z >= kGridSize / 2) m.tree.owner[leaf] = 1;
+  }
+  Front front(m.initial, m.tree, m.root);
+  TetMesh out = m.core.mesh;
+  const size_t core_tets = out.num_tets();
+  RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out);
+  EXPECT_GT(n.tets, 0u);
+  EXPECT_GT(n.foreign_faces, 0u);
+  EXPECT_LE(n.foreign_faces, n.faces_left);
+  // Every new tet stays in rank 0's leaves.
+  for (size_t t = core_tets; t < out.num_tets(); ++t)
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(m.tree.owner[front.vertex_leaf(out.tets[4 * t + k])], 0);
+  expect_valid(m, out, n.faces_left, "half owned");
+
+  // Back on this rank: the same front goes on.
+  for (int32_t& owner : m.tree.owner) owner = 0;
+  RemovalCounts more = remove_faces_tree_supported(front, m.tree, m.root, out);
+  EXPECT_GT(more.tets, 0u);
+  EXPECT_EQ(more.foreign_faces, 0u);
+  EXPECT_LT(more.faces_left, n.faces_left);
+  expect_valid(m, out, more.faces_left, "all owned");
+}
+
+}  // namespace
+}  // namespace partet::test

@@ -1,0 +1,237 @@
+// The live front store (FrontStore) and the exact face removal checks
+// (RemovalChecks) on fronts made by hand over a one-leaf octree: closing a
+// tet, a vertex inside the candidate, a new edge piercing a front face, a
+// front edge crossing a new face, a duplicate face, and touching cases at
+// shared vertices and edges that must be accepted.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "front/front.hpp"
+#include "front/initial_front.hpp"
+#include "front/removal_checks.hpp"
+
+namespace partet::test {
+namespace {
+
+struct HandFront {
+  LinearOctree tree;
+  RootCube root;
+  InitialFront initial;
+};
+
+// `outward`: closed surfaces' faces oriented outward from the region to
+// mesh (as a diagnosed surface); the front faces are their reverses.
+HandFront hand_front(const std::vector<double>& xyz, const std::vector<uint32_t>& outward) {
+  HandFront h;
+  h.tree.key = {0};
+  h.tree.level = {0};
+  h.tree.cls = {LeafClass::kBoundary};
+  h.tree.owner = {0};
+  double bbox[6] = {xyz[0], xyz[1], xyz[2], xyz[0], xyz[1], xyz[2]};
+  for (size_t i = 0; i < xyz.size(); ++i) {
+    bbox[i % 3] = std::min(bbox[i % 3], xyz[i]);
+    bbox[3 + i % 3] = std::max(bbox[3 + i % 3], xyz[i]);
+  }
+  h.root = make_root_cube(bbox);
+  const size_t n = xyz.size() / 3;
+  h.initial.xyz = xyz;
+  for (size_t v = 0; v < n; ++v) h.initial.global_ids.push_back(kSurfaceVertexId | v);
+  h.initial.vertex_leaf.assign(n, 0);
+  for (size_t t = 0; t + 2 < outward.size(); t += 3)
+    h.initial.faces.insert(h.initial.faces.end(), {outward[t], outward[t + 2], outward[t + 1]});
+  h.initial.surface_faces = h.initial.num_faces();
+  std::vector<char> used(n, 0);
+  for (uint32_t v : h.initial.faces) used[v] = 1;
+  for (uint32_t v = 0; v < n; ++v)
+    if (used[v]) h.initial.front_vertices.push_back(v);
+  h.initial.leaf_first_front_vertex = {0, static_cast<uint32_t>(h.initial.front_vertices.size())};
+  return h;
+}
+
+RemovalVerdict verdict(const Front& front, uint32_t f, uint32_t p) {
+  NearFront near;
+  gather_near_front(front, {0}, near);
+  return check_removal(front, f, p, near);
+}
+
+// The unit corner tet 0 = origin, 1 = x, 2 = y, 3 = z, outward faces.
+const std::vector<double> kTetXyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+const std::vector<uint32_t> kTetOutward = {1, 2, 3, 0, 3, 2, 0, 1, 3, 0, 2, 1};
+
+// A triangular bipyramid: equator A = 0, B = 1, C = 2 (counterclockwise
+// from +z), apexes N = 3 above and S = 4 below; outward faces.
+const std::vector<double> kBipyramidXyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.3, 0.3, 1, 0.3, 0.3, -1};
+const std::vector<uint32_t> kBipyramidOutward = {0, 1, 3, 1, 2, 3, 2, 0, 3, 1, 0, 4, 2, 1, 4, 0, 2, 4};
+
+// Index of the front face with vertex set {a, b, c}.
+uint32_t face_on(const Front& front, uint32_t a, uint32_t b, uint32_t c) {
+  const uint32_t f = front.find_face(a, b, c);
+  EXPECT_NE(f, kNoIndex);
+  return f;
+}
+
+TEST(FrontStore, HashesEdgesAndLeafLists) {
+  HandFront h = hand_front(kBipyramidXyz, kBipyramidOutward);
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(front.num_alive_faces(), 6u);
+  EXPECT_EQ(front.edge_uses(0, 1), 2u);
+  EXPECT_EQ(front.edge_uses(3, 4), 0u);
+  EXPECT_EQ(front.vertex_uses(3), 3u);
+  EXPECT_EQ(front.find_face(3, 1, 0), front.find_face(0, 1, 3));
+  int listed = 0;
+  for (uint32_t e = front.first_face_entry(0); e != kNoIndex; e = front.next_entry(e)) ++listed;
+  EXPECT_EQ(listed, 6);
+  EXPECT_FALSE(front.leaf_front_empty(0));
+
+  // Upper tet (A, B, N) + C: closes 3 faces, adds the equator (A, C, B).
+  std::vector<uint32_t> added, shrunk;
+  const uint32_t base = face_on(front, 0, 1, 3);
+  EXPECT_EQ(front.apply_tet(base, 2, added, shrunk), 2);
+  ASSERT_EQ(added.size(), 1u);
+  EXPECT_EQ(front.num_alive_faces(), 4u);
+  EXPECT_EQ(front.vertex_uses(3), 0u);
+  EXPECT_EQ(front.edge_uses(0, 3), 0u);
+  EXPECT_EQ(front.edge_uses(0, 1), 2u);
+  EXPECT_EQ(front.leaf_changed(0), 1u);
+  EXPECT_EQ(front.changes(), 1u);
+  int vertices = 0;
+  for (uint32_t v = front.first_vertex(0); v != kNoIndex; v = front.next_vertex(v)) {
+    EXPECT_NE(v, 3u);
+    ++vertices;
+  }
+  EXPECT_EQ(vertices, 4);
+
+  // The lower tet closes the rest.
+  EXPECT_EQ(verdict(front, added[0], 4), RemovalVerdict::kValid);
+  EXPECT_EQ(front.apply_tet(added[0], 4, added, shrunk), 3);
+  EXPECT_EQ(front.num_alive_faces(), 0u);
+  EXPECT_TRUE(front.leaf_front_empty(0));
+}
+
+TEST(RemovalChecks, SingleTetClosesItsFourFaces) {
+  HandFront h = hand_front(kTetXyz, kTetOutward);
+  Front front(h.initial, h.tree, h.root);
+  const uint32_t base = face_on(front, 0, 1, 2);
+  EXPECT_EQ(verdict(front, base, 3), RemovalVerdict::kValid);
+  EXPECT_EQ(verdict(front, base, 0), RemovalVerdict::kNotPositive);
+  std::vector<uint32_t> added, shrunk;
+  EXPECT_EQ(front.apply_tet(base, 3, added, shrunk), 3);
+  EXPECT_TRUE(added.empty());
+  EXPECT_EQ(front.num_alive_faces(), 0u);
+  EXPECT_TRUE(front.leaf_front_empty(0));
+}
+
+TEST(RemovalChecks, BackSideTargetIsNotPositive) {
+  std::vector<double> xyz = kTetXyz;
+  xyz.insert(xyz.end(), {0.2, 0.2, -1});
+  HandFront h = hand_front(xyz, kTetOutward);
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 4), RemovalVerdict::kNotPositive);
+}
+
+TEST(RemovalChecks, VertexInsideTheCandidate) {
+  // A small closed obstacle (a tet, facing out of itself into the region)
+  // floats inside the corner tet.
+  std::vector<double> xyz = kTetXyz;
+  xyz.insert(xyz.end(), {0.1, 0.1, 0.1, 0.2, 0.1, 0.1, 0.1, 0.2, 0.1, 0.1, 0.1, 0.2});
+  std::vector<uint32_t> faces = kTetOutward;
+  // The obstacle's faces listed facing into it: the front faces face out
+  // of it, into the region to mesh.
+  faces.insert(faces.end(), {5, 7, 6, 4, 6, 7, 4, 7, 5, 4, 5, 6});
+  HandFront h = hand_front(xyz, faces);
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 3), RemovalVerdict::kVertexInside);
+}
+
+TEST(RemovalChecks, VertexOnTheNewFaceIsInside) {
+  std::vector<double> xyz = kTetXyz;
+  xyz.insert(xyz.end(), {0.25, 0.25, 0.5, 2, 2, 2, 2, 3, 2});
+  std::vector<uint32_t> faces = kTetOutward;
+  faces.insert(faces.end(), {4, 5, 6});
+  HandFront h = hand_front(xyz, faces);
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 3), RemovalVerdict::kVertexInside);
+}
+
+TEST(RemovalChecks, NewEdgePiercesAFrontFace) {
+  // A wide triangle at z = 0.5 slices the corner tet; its vertices are far
+  // outside, so only the edges p-0, p-1, p-2 see it. The base face's other
+  // faces are absent: the new edges are new.
+  const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -1, 0.5, 3, -1, 0.5, -1, 3, 0.5};
+  HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 3), RemovalVerdict::kEdgeCrossesFace);
+}
+
+TEST(RemovalChecks, FrontEdgeCrossesANewFace) {
+  // A thin triangle at z = 0.3 whose edge u-v crosses the faces x = 0 and
+  // y = 0 of the corner tet; its third vertex is outside, and no tet edge
+  // meets it.
+  const std::vector<double> xyz = {0, 0, 0,    1,   0,    0,   0,   1,     0,  0, 0, 1,
+                                   -0.1, 0.2, 0.3, 0.2, -0.1, 0.3, 0.5, -0.39, 0.3};
+  HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 3), RemovalVerdict::kFaceCrossesEdge);
+}
+
+TEST(RemovalChecks, DuplicateFaceIsRejected) {
+  // The tet would lie on the meshed side of a face oriented like its own
+  // new face.
+  const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  // Front faces (0, 1, 2) and (0, 1, 3): the second is the new face
+  // (a, b, p) of the tet (0, 1, 2) + 3 with the same orientation.
+  HandFront h = hand_front(xyz, {0, 2, 1, 0, 3, 1});
+  Front front(h.initial, h.tree, h.root);
+  EXPECT_EQ(verdict(front, face_on(front, 0, 1, 2), 3), RemovalVerdict::kDuplicateFace);
+}
+
+TEST(RemovalChecks, ClosingTetsInABipyramidAreValid) {
+  HandFront h = hand_front(kBipyramidXyz, kBipyramidOutward);
+  Front front(h.initial, h.tree, h.root);
+  const uint32_t upper = face_on(front, 0, 1, 3);
+  // Apex C: closes two faces, the new equator face touches the rest of
+  // the front along shared edges only.
+  EXPECT_EQ(verdict(front, upper, 2), RemovalVerdict::kValid);
+  // Apex S: the new edge N-S passes through the middle, touching every
+  // face at N or S only.
+  EXPECT_EQ(verdict(front, upper, 4), RemovalVerdict::kValid);
+}
+
+TEST(RemovalChecks, CoplanarTouchAtASharedVertex) {
+  // An extra face in the equator plane z = 0 sharing vertex A: outside the
+  // new face (A, C, B)'s angle at A it is a touch; inside, its edge runs
+  // over the new face.
+  std::vector<double> xyz = kBipyramidXyz;
+  xyz.insert(xyz.end(), {-1, -0.2, 0, -0.2, -1, 0});
+  std::vector<uint32_t> faces = kBipyramidOutward;
+  faces.insert(faces.end(), {0, 5, 6});
+  {
+    HandFront h = hand_front(xyz, faces);
+    Front front(h.initial, h.tree, h.root);
+    EXPECT_EQ(verdict(front, face_on(front, 0, 1, 3), 2), RemovalVerdict::kValid);
+  }
+  xyz = kBipyramidXyz;
+  xyz.insert(xyz.end(), {2, 0.5, 0, 2, 1, 0});
+  {
+    HandFront h = hand_front(xyz, faces);
+    Front front(h.initial, h.tree, h.root);
+    EXPECT_EQ(verdict(front, face_on(front, 0, 1, 3), 2), RemovalVerdict::kFaceCrossesEdge);
+  }
+}
+
+TEST(RemovalChecks, SegmentFromASharedVertex) {
+  const double s[3] = {0, 0, 0}, t1[3] = {1, 0, 0}, t2[3] = {0, 1, 0};
+  const double above[3] = {0.2, 0.2, 1}, inside[3] = {0.2, 0.2, 0}, along[3] = {2, 0, 0};
+  const double outside[3] = {-1, -1, 0}, beside[3] = {0, -1, 0};
+  EXPECT_FALSE(meets_beyond_shared_vertex(s, above, t1, t2));
+  EXPECT_TRUE(meets_beyond_shared_vertex(s, inside, t1, t2));
+  EXPECT_TRUE(meets_beyond_shared_vertex(s, along, t1, t2));
+  EXPECT_FALSE(meets_beyond_shared_vertex(s, outside, t1, t2));
+  EXPECT_FALSE(meets_beyond_shared_vertex(s, beside, t1, t2));
+}
+
+}  // namespace
+}  // namespace partet::test
