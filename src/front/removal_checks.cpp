@@ -94,23 +94,27 @@ void gather_near_front(const Front& front, const std::vector<size_t>& leaves, Ne
   near.edges.clear();
   near.face_boxes.clear();
   near.edge_boxes.clear();
+  // A face is listed in every leaf its box overlaps: take it once (marks,
+  // not sorting: this runs for every face removal attempt).
+  if (near.face_mark.size() < front.num_face_slots()) near.face_mark.resize(front.num_face_slots(), 0);
+  if (++near.gather == 0) {
+    std::fill(near.face_mark.begin(), near.face_mark.end(), 0);
+    near.gather = 1;
+  }
   for (size_t leaf : leaves) {
-    for (uint32_t e = front.first_face_entry(leaf); e != kNoIndex; e = front.next_entry(e))
-      near.faces.push_back(front.entry_face(e));
+    for (uint32_t e = front.first_face_entry(leaf); e != kNoIndex; e = front.next_entry(e)) {
+      const uint32_t f = front.entry_face(e);
+      if (near.face_mark[f] == near.gather) continue;
+      near.face_mark[f] = near.gather;
+      near.faces.push_back(f);
+    }
     for (uint32_t v = front.first_vertex(leaf); v != kNoIndex; v = front.next_vertex(v)) near.vertices.push_back(v);
   }
-  std::sort(near.faces.begin(), near.faces.end());
-  near.faces.erase(std::unique(near.faces.begin(), near.faces.end()), near.faces.end());
-  std::sort(near.vertices.begin(), near.vertices.end());
   for (uint32_t f : near.faces) {
     const uint32_t* t = front.face(f);
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      near.edges.push_back((uint64_t{a} << 32) | b);
-    }
+    for (int k = 0; k < 3; ++k)
+      if (t[k] < t[(k + 1) % 3]) near.edges.push_back((uint64_t{t[k]} << 32) | t[(k + 1) % 3]);
   }
-  std::sort(near.edges.begin(), near.edges.end());
-  near.edges.erase(std::unique(near.edges.begin(), near.edges.end()), near.edges.end());
   for (uint32_t f : near.faces) {
     const uint32_t* t = front.face(f);
     const double* p[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
