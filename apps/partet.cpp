@@ -20,6 +20,18 @@ const char* kFooter =
     "Exit codes: 0 done, 2 bad input, 3 meshing could not finish, 4 internal error.\n"
     "Run on N ranks with: mpirun -np N partet INPUT -o OUTPUT";
 
+// Parses the command line; -1 to go on, else the exit code (0 after --help
+// or --version, 2 for a bad command line; only rank 0 prints).
+int parse(CLI::App& app, int argc, char** argv, const partet::Comm& comm) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = comm.rank() == 0 ? app.exit(e) : e.get_exit_code();
+    return code == 0 ? 0 : partet::kExitInput;
+  }
+  return -1;
+}
+
 int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   partet::MeshOptions o;
   CLI::App app{"partet: parallel tetrahedral mesh generator (octree, templates, advancing front)", "partet"};
@@ -49,13 +61,7 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_flag("--ascii", o.ascii, "Write Gmsh .msh as text instead of binary");
   app.add_flag("-q,--quiet", o.quiet, "Print errors only");
   app.add_flag("-v,--verbose", o.verbose, "Every rank prints its progress, not only rank 0");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (comm.rank() != 0) return e.get_exit_code() == 0 ? 0 : partet::kExitInput;
-    int code = app.exit(e);
-    return code == 0 ? 0 : partet::kExitInput;
-  }
+  if (int code = parse(app, argc, argv, comm); code >= 0) return code;
   if (stop == "surface") o.stop_after = partet::StopAfter::kSurface;
   if (stop == "templates") o.stop_after = partet::StopAfter::kTemplates;
   partet::Log log(comm.rank(), o.quiet, o.verbose);
@@ -72,13 +78,7 @@ int check_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_option("mesh", o.mesh, "Volume mesh to check")->required();
   app.add_option("--surface", o.surface, "Surface the mesh must be bounded by exactly");
   app.add_flag("--json", o.json, "Print the result as JSON");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (comm.rank() != 0) return e.get_exit_code() == 0 ? 0 : partet::kExitInput;
-    int code = app.exit(e);
-    return code == 0 ? 0 : partet::kExitInput;
-  }
+  if (int code = parse(app, argc, argv, comm); code >= 0) return code;
   if (comm.rank() != 0) return 0;
   return partet::run_check(o);
 }

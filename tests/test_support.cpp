@@ -66,6 +66,18 @@ SurfaceMesh box_surface(double a, double b, double c) {
   return s;
 }
 
+SurfaceMesh shifted_box(double lo, double size) {
+  SurfaceMesh s = box_surface(size, size, size);
+  for (double& c : s.xyz) c += lo;
+  return s;
+}
+
+void append(SurfaceMesh& a, const SurfaceMesh& b) {
+  const uint32_t base = static_cast<uint32_t>(a.num_vertices());
+  a.xyz.insert(a.xyz.end(), b.xyz.begin(), b.xyz.end());
+  for (uint32_t v : b.tris) a.tris.push_back(v + base);
+}
+
 TetMesh cube_tets() {
   TetMesh m;
   SurfaceMesh box = box_surface();

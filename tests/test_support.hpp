@@ -29,6 +29,11 @@ RunResult run_partet(const std::string& args);
 // An axis-aligned box [0,a]x[0,b]x[0,c] as 12 outward triangles; vertex i
 // is (a if i&1, b if i&2, c if i&4).
 SurfaceMesh box_surface(double a = 1, double b = 1, double c = 1);
+// The cube [lo, lo+size]^3 as box_surface() triangles.
+SurfaceMesh shifted_box(double lo, double size);
+// Appends `b` to `a` as a separate shell (its vertices renumbered).
+void append(SurfaceMesh& a, const SurfaceMesh& b);
+
 // The unit cube [0,1]^3 split into 6 positive tets around the 0-7 diagonal,
 // with its 12 boundary triangles (those of box_surface()).
 TetMesh cube_tets();

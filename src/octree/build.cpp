@@ -105,14 +105,7 @@ void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCu
     const double* b = s.point(v[1]);
     const double* c = s.point(v[2]);
     const int want = std::min({vertex_level[v[0]], vertex_level[v[1]], vertex_level[v[2]]});
-    double lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min({a[i], b[i], c[i]});
-      hi[i] = std::max({a[i], b[i], c[i]});
-    }
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    query.leaves_in_range(glo, ghi, leaves);
+    leaves_over_triangle_box(query, root, a, b, c, leaves);
     for (size_t leaf : leaves) {
       if (tree.level[leaf] >= want) continue;
       uint32_t x, y, z;

@@ -56,4 +56,9 @@ class LeafRangeQuery {
   std::vector<uint32_t> table_;   // per cell, plus one: first leaf with key >= the cell's first key
 };
 
+// The leaves over the bounding box of triangle (a, b, c): a superset of the
+// leaves the closed triangle meets.
+void leaves_over_triangle_box(const LeafRangeQuery& query, const RootCube& root, const double* a, const double* b,
+                              const double* c, std::vector<size_t>& out);
+
 }  // namespace partet

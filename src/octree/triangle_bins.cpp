@@ -43,14 +43,7 @@ LeafTriangles bin_triangles(const LinearOctree& tree, const SurfaceMesh& s, cons
     const double* a = s.point(v[0]);
     const double* b = s.point(v[1]);
     const double* c = s.point(v[2]);
-    double lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min({a[i], b[i], c[i]});
-      hi[i] = std::max({a[i], b[i], c[i]});
-    }
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    query.leaves_in_range(glo, ghi, leaves);
+    leaves_over_triangle_box(query, root, a, b, c, leaves);
     for (size_t leaf : leaves) {
       double blo[3], bhi[3];
       leaf_box(tree, root, leaf, blo, bhi);

@@ -14,21 +14,10 @@
 namespace partet {
 namespace {
 
+using test::append;
 using test::box_surface;
 using test::data_path;
-
-// Appends `b` to `a` (vertices renumbered), as a separate shell.
-void append(SurfaceMesh& a, const SurfaceMesh& b) {
-  uint32_t base = static_cast<uint32_t>(a.num_vertices());
-  a.xyz.insert(a.xyz.end(), b.xyz.begin(), b.xyz.end());
-  for (uint32_t v : b.tris) a.tris.push_back(v + base);
-}
-
-SurfaceMesh shifted_box(double lo, double size) {
-  SurfaceMesh s = box_surface(size, size, size);
-  for (double& c : s.xyz) c += lo;
-  return s;
-}
+using test::shifted_box;
 
 void flip_all(SurfaceMesh& s) {
   for (size_t t = 0; t < s.num_triangles(); ++t) std::swap(s.tris[3 * t + 1], s.tris[3 * t + 2]);

@@ -32,6 +32,9 @@
 namespace partet::test {
 namespace {
 
+using test::append;
+using test::shifted_box;
+
 struct CorpusTotals {
   size_t cases = 0, leaves = 0, interior = 0, demoted = 0, front_faces = 0;
 };
@@ -82,18 +85,6 @@ void check_factors(SurfaceMesh surface, const std::string& label,
     check_core(surface, summary, factor, label, totals);
     if (::testing::Test::HasFailure()) return;
   }
-}
-
-void append(SurfaceMesh& a, const SurfaceMesh& b) {
-  const uint32_t base = static_cast<uint32_t>(a.num_vertices());
-  a.xyz.insert(a.xyz.end(), b.xyz.begin(), b.xyz.end());
-  for (uint32_t v : b.tris) a.tris.push_back(v + base);
-}
-
-SurfaceMesh shifted_box(double lo, double size) {
-  SurfaceMesh s = box_surface(size, size, size);
-  for (double& c : s.xyz) c += lo;
-  return s;
 }
 
 TEST(CoreCorpus, GoodSurfaces) {
