@@ -16,7 +16,7 @@ template <class T>
 void put(std::string& out, const std::vector<T>& v) {
   uint64_t n = v.size();
   out.append(reinterpret_cast<const char*>(&n), sizeof n);
-  out.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
+  if (n > 0) out.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
 }
 
 template <class T>
@@ -27,7 +27,7 @@ void get(const std::string& in, size_t& pos, std::vector<T>& v) {
   pos += sizeof n;
   PARTET_ASSERT(n <= (in.size() - pos) / sizeof(T), "truncated part image");
   v.resize(n);
-  std::memcpy(v.data(), in.data() + pos, n * sizeof(T));
+  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(T));
   pos += n * sizeof(T);
 }
 

@@ -50,6 +50,10 @@ TEST(CommSerial, PartImageRoundTrips) {
   EXPECT_EQ(back.tets, m.tets);
   EXPECT_EQ(back.tris, m.tris);
   EXPECT_EQ(back.global_ids, m.global_ids);
+  TetMesh empty;  // no arrays at all: nothing to copy from or to
+  TetMesh none = deserialize_part(serialize_part(empty));
+  EXPECT_EQ(none.num_vertices(), 0u);
+  EXPECT_TRUE(none.global_ids.empty());
 }
 
 }  // namespace
