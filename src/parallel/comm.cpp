@@ -1,6 +1,7 @@
 // Comm and MpiSession: checked MPI calls on one communicator.
 #include "parallel/comm.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -94,6 +95,84 @@ std::vector<int64_t> Comm::all_gather(int64_t v) const {
   std::vector<int64_t> r(static_cast<size_t>(size_));
   check_mpi(MPI_Allgather(&v, 1, MPI_INT64_T, r.data(), 1, MPI_INT64_T, comm_), "MPI_Allgather");
   return r;
+}
+
+namespace {
+
+// MPI counts are int: reduce long arrays in pieces.
+constexpr size_t kReduceChunk = size_t{1} << 28;
+
+void reduce_in_place(MPI_Comm comm, void* values, size_t n, MPI_Datatype type, size_t type_bytes, MPI_Op op,
+                     const char* what) {
+  char* bytes = static_cast<char*>(values);
+  for (size_t begin = 0; begin < n; begin += kReduceChunk) {
+    size_t count = std::min(kReduceChunk, n - begin);
+    check_mpi(MPI_Allreduce(MPI_IN_PLACE, bytes + begin * type_bytes, static_cast<int>(count), type, op, comm), what);
+  }
+}
+
+}  // namespace
+
+void Comm::sum(int64_t* values, size_t n) const {
+  if (serial_) return;
+  reduce_in_place(comm_, values, n, MPI_INT64_T, sizeof(int64_t), MPI_SUM, "MPI_Allreduce(sum array)");
+}
+
+void Comm::min(double* values, size_t n) const {
+  if (serial_) return;
+  reduce_in_place(comm_, values, n, MPI_DOUBLE, sizeof(double), MPI_MIN, "MPI_Allreduce(min array)");
+}
+
+void Comm::max(double* values, size_t n) const {
+  if (serial_) return;
+  reduce_in_place(comm_, values, n, MPI_DOUBLE, sizeof(double), MPI_MAX, "MPI_Allreduce(max array)");
+}
+
+std::vector<char> Comm::all_to_all(const std::vector<char>& send, const std::vector<int64_t>& send_bytes,
+                                   std::vector<int64_t>& recv_bytes) const {
+  const size_t p = static_cast<size_t>(size_);
+  if (send_bytes.size() != p) throw InternalError("Comm::all_to_all: one byte count per rank expected");
+  int64_t send_total = 0;
+  for (int64_t b : send_bytes) send_total += b;
+  if (send_total != static_cast<int64_t>(send.size()))
+    throw InternalError("Comm::all_to_all: byte counts do not add up");
+  if (serial_) {
+    recv_bytes = send_bytes;
+    return send;
+  }
+  recv_bytes.assign(p, 0);
+  check_mpi(MPI_Alltoall(send_bytes.data(), 1, MPI_INT64_T, recv_bytes.data(), 1, MPI_INT64_T, comm_),
+            "MPI_Alltoall(counts)");
+  int64_t total = 0;
+  for (int64_t b : recv_bytes) total += b;
+  std::vector<char> recv(static_cast<size_t>(total));
+  // One message per chunk of at most 1 GiB; MPI keeps the chunks of a pair in order.
+  constexpr int64_t kChunk = int64_t{1} << 30;
+  constexpr int kTag = 7400;
+  std::vector<MPI_Request> requests;
+  int64_t recv_at = 0, send_at = 0;
+  for (size_t r = 0; r < p; ++r) {
+    for (int64_t at = 0; at < recv_bytes[r]; at += kChunk) {
+      int count = static_cast<int>(std::min(kChunk, recv_bytes[r] - at));
+      requests.emplace_back();
+      check_mpi(MPI_Irecv(recv.data() + recv_at + at, count, MPI_CHAR, static_cast<int>(r), kTag, comm_,
+                          &requests.back()),
+                "MPI_Irecv");
+    }
+    recv_at += recv_bytes[r];
+  }
+  for (size_t r = 0; r < p; ++r) {
+    for (int64_t at = 0; at < send_bytes[r]; at += kChunk) {
+      int count = static_cast<int>(std::min(kChunk, send_bytes[r] - at));
+      requests.emplace_back();
+      check_mpi(MPI_Isend(send.data() + send_at + at, count, MPI_CHAR, static_cast<int>(r), kTag, comm_,
+                          &requests.back()),
+                "MPI_Isend");
+    }
+    send_at += send_bytes[r];
+  }
+  check_mpi(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  return recv;
 }
 
 void Comm::broadcast(std::string& s, int root) const {

@@ -43,6 +43,16 @@ class Comm {
   // Every rank's value, on every rank.
   std::vector<double> all_gather(double v) const;
   std::vector<int64_t> all_gather(int64_t v) const;
+  // Element-wise over ranks, in place: every rank ends with the same array.
+  void sum(int64_t* values, size_t n) const;
+  void min(double* values, size_t n) const;
+  void max(double* values, size_t n) const;
+  // Personalised exchange: `send` holds the bytes for rank 0, then rank 1...,
+  // send_bytes[d] of them for rank d (size() entries). Returns the bytes
+  // received, concatenated in source rank order; recv_bytes[s] is how many
+  // came from rank s. No 2 GiB limit: large messages go in chunks.
+  std::vector<char> all_to_all(const std::vector<char>& send, const std::vector<int64_t>& send_bytes,
+                               std::vector<int64_t>& recv_bytes) const;
   void broadcast(std::string& s, int root) const;
   // Every rank's bytes, in rank order, on `root` (empty elsewhere).
   std::vector<std::string> gather(const std::string& bytes, int root) const;

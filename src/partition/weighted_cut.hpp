@@ -1,0 +1,44 @@
+// Distributed weighted cut of several point sets at once ("slots"): the
+// parallel weighted quantile search of recursive bisection.
+//
+// Contract: collective over `comm`. Point i belongs to slot slot[i] in
+// [0, target.size()), or to none when slot[i] < 0. Each point has a key of
+// kCutKeyWords 64-bit words (compared lexicographically) that is distinct
+// from every other key of its slot over all ranks, and an integer weight
+// (sums over all ranks below 2^62). In the key order, the low side of a slot
+// is a prefix: the points before the first point e at which the running
+// weight reaches target[s], plus e itself when that brings the low weight
+// closer to target[s] (or as close). The result is 1 for the points on the
+// low side, 0 for the others (and for points of no slot). It depends only on
+// the global set of (key, weight) pairs, never on the rank holding a point.
+//
+// Method: radix refinement from the most significant byte: each round sums
+// over all ranks, for every slot at once, the weight and count of the
+// undecided points in each of 256 buckets of the next key byte; the points
+// in the buckets before the one where the target is reached are decided low,
+// those after it high. A slot is done when one undecided point is left: at
+// most 8 * kCutKeyWords rounds, usually a few.
+#pragma once
+
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "parallel/comm.hpp"
+
+namespace partet {
+
+constexpr size_t kCutKeyWords = 6;
+
+// An unsigned key with the order of the doubles (-0.0 and 0.0 are one key).
+inline uint64_t ordered_key(double v) {
+  if (v == 0) v = 0.0;
+  uint64_t bits = std::bit_cast<uint64_t>(v);
+  return (bits >> 63) != 0 ? ~bits : bits | (uint64_t{1} << 63);
+}
+
+std::vector<uint8_t> weighted_cut(const Comm& comm, const uint64_t* keys, const uint64_t* weight,
+                                  const int32_t* slot, size_t n, const std::vector<uint64_t>& target);
+
+}  // namespace partet
