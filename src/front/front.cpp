@@ -31,7 +31,8 @@ size_t Front::TripleHash::operator()(const std::array<uint32_t, 3>& k) const {
 }
 
 Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root)
-    : root_(root),
+    : tree_(tree),
+      root_(root),
       query_(tree),
       xyz_(initial.xyz),
       global_ids_(initial.global_ids),
@@ -180,6 +181,28 @@ void Front::close_face(uint32_t f, std::vector<uint32_t>& shrunk) {
   release_vertex(a, shrunk);
   release_vertex(b, shrunk);
   release_vertex(c, shrunk);
+}
+
+uint32_t Front::add_vertex(const double* p, uint64_t global_id) {
+  PARTET_ASSERT(vertex_leaf_.size() < kNoIndex - 1, "too many front vertices");
+  const uint32_t v = static_cast<uint32_t>(vertex_leaf_.size());
+  xyz_.insert(xyz_.end(), p, p + 3);
+  global_ids_.push_back(global_id);
+  vertex_leaf_.push_back(leaf_of_point(tree_, root_, p));
+  vertex_uses_.push_back(0);
+  vertex_prev_.push_back(kNoIndex);
+  vertex_next_.push_back(kNoIndex);
+  return v;
+}
+
+void Front::remove_last_vertex() {
+  PARTET_ASSERT(!vertex_leaf_.empty() && vertex_uses_.back() == 0, "removing a used front vertex");
+  xyz_.resize(xyz_.size() - 3);
+  global_ids_.pop_back();
+  vertex_leaf_.pop_back();
+  vertex_uses_.pop_back();
+  vertex_prev_.pop_back();
+  vertex_next_.pop_back();
 }
 
 int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {

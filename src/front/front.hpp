@@ -2,9 +2,10 @@
 // unmeshed region, which shrink as tets are made.
 //
 // Contents (flat arrays, indices stable for the front's lifetime):
-//  - vertices: the InitialFront's joint numbering unchanged (coordinates,
-//    global ids, the leaf whose half-open box contains each); a vertex is a
-//    front vertex while at least one alive face uses it;
+//  - vertices: the InitialFront's joint numbering unchanged, then the
+//    vertices appended by add_vertex (coordinates, global ids, the leaf
+//    whose half-open box contains each); a vertex is a front vertex while
+//    at least one alive face uses it;
 //  - faces: 3 vertex indices each, counterclockwise seen from the unmeshed
 //    region (normal (b-a)x(c-a) into it), with an alive flag; closed faces
 //    stay as dead entries, new faces are appended;
@@ -43,7 +44,7 @@ class Front {
   // Copies the vertices and faces of `initial`, which must come from
   // make_initial_front over `tree` and `root`. Keeps a range query over
   // `tree`, whose leaves (keys and levels) must not change while the front
-  // is used; leaf classes and owners may.
+  // is used (the front keeps a reference to it); leaf classes and owners may.
   Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root);
 
   const RootCube& root() const { return root_; }
@@ -85,6 +86,14 @@ class Front {
   // Number of tets applied so far (the change counter).
   uint64_t changes() const { return changes_; }
 
+  // Appends a vertex at p with global id `global_id`, in the leaf whose
+  // half-open box contains p (clamped into the root cube), and returns its
+  // index. It becomes a front vertex, listed in that leaf, once a face uses
+  // it.
+  uint32_t add_vertex(const double* p, uint64_t global_id);
+  // Removes the last vertex, which no face may have used (undoes add_vertex).
+  void remove_last_vertex();
+
   // Applies the positively oriented tet (a, b, c, p) built on alive face f
   // = (a, b, c) (orient3d(a, b, c, p) > 0 is the caller's check): closes f;
   // each of the new faces (b, c, p), (a, p, c), (a, b, p) (oriented away
@@ -103,6 +112,7 @@ class Front {
   void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
   void change_edge(uint32_t a, uint32_t b, int delta);
 
+  const LinearOctree& tree_;
   const RootCube root_;
   LeafRangeQuery query_;
   std::vector<size_t> leaves_scratch_;

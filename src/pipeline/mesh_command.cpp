@@ -2,11 +2,13 @@
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
 // balance), classify leaves, make the interior set manifold (demoting
 // leaves to too close), template the interior, make the initial front.
-// Face removals are not in this version yet: a full run says so and exits 3;
-// --stop-after templates writes the templated core and exits 0.
+// Then tree-supported face removals and, for the faces they leave, face
+// removals with new vertices; a front left after those exits 3 (naming
+// where); --stop-after templates writes the templated core and exits 0.
 #include "pipeline/mesh_command.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "check/quality.hpp"
 #include "core/error.hpp"
@@ -14,6 +16,7 @@
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/initial_front.hpp"
+#include "front/steiner_removal.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"
@@ -264,18 +267,31 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       });
     } else {
       SurfaceMesh left;
+      std::unique_ptr<Front> front;
       report.run_step("face removals (tree)", [&] {
         if (!root_rank) return ojson::object();
-        Front front(s.initial_front, s.tree, s.root);
+        front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
         s.mesh = std::move(s.core.mesh);
-        RemovalCounts n = remove_faces_tree_supported(front, s.tree, s.root, s.mesh);
-        left = front_left(front);
+        RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh);
         ojson c;
         c["tets"] = n.tets;
         c["faces left"] = n.faces_left;
         c["passes"] = n.passes;
         return c;
       });
+      if (comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
+        report.run_step("face removals (new vertices)", [&] {
+          if (!root_rank) return ojson::object();
+          const size_t vertices_before = front->num_vertices();
+          RemovalCounts n = remove_faces_with_new_vertices(*front, s.tree, s.root, s.mesh);
+          ojson c;
+          c["tets"] = n.tets;
+          c["new vertices"] = front->num_vertices() - vertices_before;
+          c["faces left"] = n.faces_left;
+          return c;
+        });
+      }
+      if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
       if (faces_left > 0) {
         if (options.keep_partial) {
@@ -288,7 +304,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
             return c;
           });
         }
-        throw MeshingError(options.input + ": tree-less face removals are not available in this version yet and " +
+        throw MeshingError(options.input + ": face removals could not close the front: " +
                            where_left(left) + (options.keep_partial ? "; the tets made and the front left were written"
                                                                     : "; nothing was written (--keep-partial writes "
                                                                       "the tets made and the front left)"));

@@ -48,17 +48,26 @@ TEST(Cli, CubeIsMeshedByTreeSupportedRemovals) {
   EXPECT_EQ(check.exit_code, 0) << check.output;
 }
 
+TEST(Cli, IcosahedronIsClosedByACavityPoint) {
+  std::string dir = scratch_dir("cli_ico");
+  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.msh");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(contains(r.output, "face removals (new vertices)")) << r.output;
+  auto check = run_partet("check " + dir + "/ico.msh --surface " + data_path("good/icosahedron.off"));
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+}
+
 TEST(Cli, UnfinishedMeshingSaysWhereAndKeepsThePartialMesh) {
   std::string dir = scratch_dir("cli_partial");
-  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.vtu");
+  auto r = run_partet(data_path("good/ellipsoid.off") + " -o " + dir + "/ell.vtu");
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_TRUE(contains(r.output, "front faces remain, near (")) << r.output;
-  EXPECT_FALSE(std::filesystem::exists(dir + "/ico.vtu"));
-  auto kept = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.vtu --keep-partial");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/ell.vtu"));
+  auto kept = run_partet(data_path("good/ellipsoid.off") + " -o " + dir + "/ell.vtu --keep-partial");
   EXPECT_EQ(kept.exit_code, 3) << kept.output;
   // What was made is a valid partial mesh; the front left is a closed surface.
-  EXPECT_EQ(run_partet("check " + dir + "/ico.vtu").exit_code, 0);
-  SurfaceMesh left = read_surface_file(dir + "/ico.front.off");
+  EXPECT_EQ(run_partet("check " + dir + "/ell.vtu").exit_code, 0);
+  SurfaceMesh left = read_surface_file(dir + "/ell.front.off");
   EXPECT_GT(left.num_triangles(), 0u);
 }
 
@@ -142,7 +151,7 @@ TEST(Cli, QuietPrintsOnlyErrors) {
   auto ok = run_partet(data_path("good/cube.off") + " -o " + dir + "/c.vtu --quiet");
   EXPECT_EQ(ok.exit_code, 0);
   EXPECT_EQ(ok.output, "");
-  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/i.vtu --quiet");
+  auto r = run_partet(data_path("good/ellipsoid.off") + " -o " + dir + "/i.vtu --quiet");
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_FALSE(contains(r.output, "read surface")) << r.output;
   EXPECT_TRUE(contains(r.output, "partet: error:")) << r.output;
