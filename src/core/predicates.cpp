@@ -184,8 +184,20 @@ int orient3d_exact(const double* a, const double* b, const double* c, const doub
     double s[4][3];
     scaled_copy(p, shift, s);
     Expansion<2> rows[3][3];
+    bool single = true;  // every difference is one double (common: nearby points)
     for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 3; ++k) rows[i][k] = exact::exact_difference(s[i + 1][k], s[0][k]);
+      for (int k = 0; k < 3; ++k) {
+        rows[i][k] = exact::exact_difference(s[i + 1][k], s[0][k]);
+        single = single && rows[i][k].n < 2;
+      }
+    if (single) {
+      // Products of single doubles: far shorter expansions than with
+      // two-component differences.
+      Expansion<1> one[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) one[i][k] = exact::exact_value(rows[i][k].n == 0 ? 0.0 : rows[i][k].c[0]);
+      return orient3d_formula(one[0], one[1], one[2]).sign();
+    }
     return orient3d_formula(rows[0], rows[1], rows[2]).sign();
   }
   BigInt<34> rows[3][3];
