@@ -18,7 +18,7 @@ void Log::step(const std::string& name, double seconds, const std::string& count
   if (!enabled_) return;
   if (tty_ && last_progress_ >= 0) std::fputs("\r\033[K", stderr);
   last_progress_ = -1;
-  std::fprintf(stderr, "%s  %-24s %9.3f s  %s\n", prefix_.c_str(), name.c_str(), seconds, counts.c_str());
+  std::fprintf(stderr, "%s  %-28s %9.3f s  %s\n", prefix_.c_str(), name.c_str(), seconds, counts.c_str());
 }
 
 void Log::note(const std::string& text) const {
@@ -31,7 +31,7 @@ void Log::progress(const std::string& name, double fraction) const {
   double now = Stopwatch::cpu_now();
   if (last_progress_ >= 0 && now - last_progress_ < 0.1 && fraction < 1.0) return;
   last_progress_ = now;
-  std::fprintf(stderr, "\r\033[K%s  %-24s %5.1f%%", prefix_.c_str(), name.c_str(), 100.0 * fraction);
+  std::fprintf(stderr, "\r\033[K%s  %-28s %5.1f%%", prefix_.c_str(), name.c_str(), 100.0 * fraction);
   std::fflush(stderr);
 }
 

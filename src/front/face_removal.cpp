@@ -101,20 +101,11 @@ bool Remover::neighbourhood_foreign() const {
 }
 
 void Remover::make_tet(uint32_t f, uint32_t p) {
-  const uint32_t* t = front_.face(f);
-  out_.tets.insert(out_.tets.end(), {t[0], t[1], t[2], p});
+  make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_);
   ++counts_.tets;
-  added_.clear();
-  shrunk_.clear();
-  front_.apply_tet(f, p, added_, shrunk_);
   for (uint32_t g : added_) queue_.push_back(g);
   failed_at_.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
-  for (uint32_t leaf : shrunk_) {
-    LeafClass& cls = tree_.cls[leaf];
-    if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front_.leaf_front_empty(leaf))
-      cls = LeafClass::kDone;
-  }
 }
 
 bool Remover::try_face(uint32_t f) {
@@ -193,6 +184,20 @@ RemovalCounts Remover::run() {
 }
 
 }  // namespace
+
+void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
+                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
+  const uint32_t* t = front.face(f);
+  out.tets.insert(out.tets.end(), {t[0], t[1], t[2], p});
+  added.clear();
+  shrunk.clear();
+  front.apply_tet(f, p, added, shrunk);
+  for (uint32_t leaf : shrunk) {
+    LeafClass& cls = tree.cls[leaf];
+    if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front.leaf_front_empty(leaf))
+      cls = LeafClass::kDone;
+  }
+}
 
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
                                           const RemovalOptions& options) {

@@ -32,6 +32,8 @@
 // Deterministic: no hash iteration, ties broken by index.
 #pragma once
 
+#include <vector>
+
 #include <cstddef>
 
 #include "core/tet_mesh.hpp"
@@ -53,6 +55,13 @@ struct RemovalCounts {
   size_t passes = 0;
   size_t checks = 0;         // candidate tets checked
 };
+
+// Makes tet (base face f, p): appends it to `out`, updates the front
+// (`added`: faces made; `shrunk`: leaves whose front lost faces) and
+// reclassifies boundary or too-close leaves whose front became empty as
+// kDone. Shared by every kind of removal.
+void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
+                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
 
 // `front` must be built over `tree` and `root`. `out` receives the tets,
 // numbered in the front's vertex numbering: its vertices must be a prefix

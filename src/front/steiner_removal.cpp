@@ -102,17 +102,8 @@ bool SteinerRemover::valid_tet(uint32_t f, uint32_t v) {
 }
 
 void SteinerRemover::make_tet(uint32_t f, uint32_t v) {
-  const uint32_t* t = front_.face(f);
-  out_.tets.insert(out_.tets.end(), {t[0], t[1], t[2], v});
+  make_removal_tet(front_, tree_, out_, f, v, added_, shrunk_);
   ++counts_.tets;
-  added_.clear();
-  shrunk_.clear();
-  front_.apply_tet(f, v, added_, shrunk_);
-  for (uint32_t leaf : shrunk_) {
-    LeafClass& cls = tree_.cls[leaf];
-    if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front_.leaf_front_empty(leaf))
-      cls = LeafClass::kDone;
-  }
 }
 
 bool SteinerRemover::try_cavity(const std::vector<uint32_t>& faces) {
