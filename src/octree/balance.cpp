@@ -6,7 +6,6 @@
 #include <array>
 #include <bit>
 
-#include "octree/build.hpp"
 #include "octree/neighbours.hpp"
 
 namespace partet {
@@ -59,7 +58,9 @@ bool by_key(const RefineRequest& a, const RefineRequest& b) { return a.key < b.k
 
 }  // namespace
 
-void balance_octree(LinearOctree& tree) {
+void balance_octree(LinearOctree& tree) { refine_octree(tree, balance_requests(tree)); }
+
+std::vector<RefineRequest> balance_requests(const LinearOctree& tree) {
   // required[L]: anchor keys of the octants that must exist at level L.
   std::vector<std::vector<uint64_t>> required(kMaxLevel + 1);
   for (size_t i = 0; i < tree.size(); ++i) required[tree.level[i]].push_back(tree.key[i]);
@@ -93,7 +94,7 @@ void balance_octree(LinearOctree& tree) {
     here.clear();
     here.shrink_to_fit();
   }
-  refine_octree(tree, std::move(requests));
+  return requests;
 }
 
 bool is_balanced(const LinearOctree& tree) {

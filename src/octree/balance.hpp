@@ -17,8 +17,16 @@
 // the parents sharing a grandparent are gathered in one 4 x 4 x 4 bit mask
 // (so shared ones are emitted once), and the required octants are sorted
 // once per level: O(n log n) for n leaves.
+//
+// The required octants of a set of leaves are the union of each leaf's own
+// (they depend on the leaf alone), so a distributed tree is balanced by
+// computing them per rank and sending each to the rank holding its anchor
+// (octree/distributed_build.hpp).
 #pragma once
 
+#include <vector>
+
+#include "octree/build.hpp"
 #include "octree/octree.hpp"
 
 namespace partet {
@@ -26,6 +34,12 @@ namespace partet {
 // Precondition: `tree` is complete. New leaves keep their parent's class and
 // owner.
 void balance_octree(LinearOctree& tree);
+
+// The required octants of the leaves of `leaves` (sorted, disjoint; not
+// necessarily complete), as refinement requests sorted by key; they may lie
+// anywhere in the root cube. balance_octree(t) is refine_octree(t,
+// balance_requests(t)).
+std::vector<RefineRequest> balance_requests(const LinearOctree& leaves);
 
 // True when `tree` is 2:1 balanced across faces and edges (checked with
 // neighbour queries on every leaf: its 6 faces and 12 edges).

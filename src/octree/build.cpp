@@ -89,8 +89,11 @@ LinearOctree build_octree(const std::vector<uint32_t>& grid, const std::vector<u
   return tree;
 }
 
-void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
-                          const std::vector<uint8_t>& vertex_level) {
+namespace {
+
+// Both forms of refine_for_triangles; `owner` < 0 refines every leaf.
+void refine_along_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                            const std::vector<uint8_t>& vertex_level, int32_t owner) {
   std::vector<RefineRequest> requests;
   std::vector<size_t> leaves;
   LeafRangeQuery query(tree);
@@ -107,7 +110,7 @@ void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCu
     const int want = std::min({vertex_level[v[0]], vertex_level[v[1]], vertex_level[v[2]]});
     leaves_over_triangle_box(query, root, a, b, c, leaves);
     for (size_t leaf : leaves) {
-      if (tree.level[leaf] >= want) continue;
+      if (tree.level[leaf] >= want || (owner >= 0 && tree.owner[leaf] != owner)) continue;
       uint32_t x, y, z;
       tree.anchor(leaf, x, y, z);
       stack.push_back({x, y, z, tree.level[leaf]});
@@ -128,6 +131,19 @@ void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCu
     }
   }
   refine_octree(tree, std::move(requests));
+}
+
+}  // namespace
+
+void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                          const std::vector<uint8_t>& vertex_level) {
+  refine_along_triangles(tree, s, root, vertex_level, -1);
+}
+
+void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
+                          const std::vector<uint8_t>& vertex_level, int32_t owner) {
+  PARTET_ASSERT(owner >= 0, "owner must be a rank");
+  refine_along_triangles(tree, s, root, vertex_level, owner);
 }
 
 }  // namespace partet

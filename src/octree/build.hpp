@@ -48,4 +48,9 @@ void refine_octree(LinearOctree& tree, std::vector<RefineRequest> requests);
 void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& surface, const RootCube& root,
                           const std::vector<uint8_t>& vertex_level);
 
+// The same, refining only the leaves whose owner is `owner` (the others are
+// left as they are): one rank's part of a partition view (key_ranges.hpp).
+void refine_for_triangles(LinearOctree& tree, const SurfaceMesh& surface, const RootCube& root,
+                          const std::vector<uint8_t>& vertex_level, int32_t owner);
+
 }  // namespace partet

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -81,16 +82,22 @@ constexpr bool is_corner_point(int p) { return p % 3 != 1 && p / 3 % 3 != 1 && p
 
 // The occupancy of the leaves' child anchors and which of them are tested
 // (corners of leaves that were interior when the pass started). A point is
-// named by its index 8 * home leaf + child anchor.
+// named by its index 8 * home leaf + child anchor. With a `part` (a rank),
+// the tree is a local view (octree/ghost_layer.hpp): only leaves with an
+// owner mark their points, and only points homed on the part's leaves are
+// tested; without (part < 0), every leaf does both.
 class Occupancy {
  public:
-  explicit Occupancy(LinearOctree& tree)
-      : tree_(tree), around_(tree), octants_(8 * tree.size(), 0), tested_(tree.size(), 0) {}
+  Occupancy(LinearOctree& tree, int32_t part)
+      : tree_(tree), around_(tree), octants_(8 * tree.size(), 0), tested_(tree.size(), 0), part_(part) {}
+
+  bool marks(size_t i) const { return part_ < 0 || tree_.owner[i] >= 0; }
+  bool tests(size_t i) const { return part_ < 0 || tree_.owner[i] == part_; }
 
   // Marks the octants of every interior leaf at its 26 boundary points.
   void gather() {
     for (size_t i = 0; i < tree_.size(); ++i) {
-      if (tree_.cls[i] != LeafClass::kInterior) continue;
+      if (tree_.cls[i] != LeafClass::kInterior || !marks(i)) continue;
       around_.reset(i);
       for (int p = 0; p < kLeafPoints; ++p) {
         if (p == kLeafCentre) continue;
@@ -108,7 +115,7 @@ class Occupancy {
   // Appends the tested points that are not manifold, ascending.
   void find_non_manifold(std::vector<uint64_t>& out) const {
     for (size_t i = 0; i < tree_.size(); ++i)
-      for (unsigned bits = tested_[i]; bits != 0; bits &= bits - 1) {
+      for (unsigned bits = tests(i) ? tested_[i] : 0u; bits != 0; bits &= bits - 1) {
         const uint64_t point = 8 * uint64_t{i} + static_cast<unsigned>(__builtin_ctz(bits));
         if (!kManifold[octants_[point]]) out.push_back(point);
       }
@@ -117,9 +124,9 @@ class Occupancy {
   bool manifold(uint64_t point) const { return kManifold[octants_[point]]; }
 
   // Keeps the best manifold set of the interior leaves around `point` (see
-  // the header) and demotes the others; appends the tested points whose occupancy changed to `changed`. Returns
-  // the number of leaves demoted.
-  size_t repair(uint64_t point, std::vector<uint64_t>& changed) {
+  // the header) and demotes the others, appending them to `demoted` and the
+  // tested points whose occupancy changed to `changed`.
+  void repair(uint64_t point, std::vector<uint64_t>& changed, std::vector<size_t>& demoted) {
     const size_t home = point / 8;
     const unsigned child = point % 8;
     const unsigned mask = octants_[point];
@@ -175,19 +182,17 @@ class Occupancy {
         best_volume = volume;
       }
     }
-    size_t demoted = 0;
     for (int m = 0; m < count; ++m)
       if (!(best >> m & 1)) {
         demote(leaf[m], changed);
-        ++demoted;
+        demoted.push_back(leaf[m]);
       }
-    return demoted;
   }
 
- private:
   // Makes leaf i too close and clears its octants at its boundary points.
   void demote(size_t i, std::vector<uint64_t>& changed) {
     tree_.cls[i] = LeafClass::kTooClose;
+    if (!marks(i)) return;
     around_.reset(i);
     for (int p = 0; p < kLeafPoints; ++p) {
       if (p == kLeafCentre) continue;
@@ -195,15 +200,27 @@ class Occupancy {
       if (h.leaf == kAbsentLeaf) continue;
       const uint64_t point = 8 * uint64_t{h.leaf} + h.child;
       octants_[point] &= static_cast<uint8_t>(~kFootprint[p]);
-      if (tested_[h.leaf] >> h.child & 1) changed.push_back(point);
+      if ((tested_[h.leaf] >> h.child & 1) && tests(h.leaf)) changed.push_back(point);
     }
   }
+
+ private:
 
   LinearOctree& tree_;
   LeafNeighbourhood around_;
   std::vector<uint8_t> octants_;  // 8 per leaf: occupancy of child anchor b at 8 i + b
   std::vector<uint8_t> tested_;   // per leaf: the child anchors that are tested points
+  int32_t part_;
 };
+
+// The next round's points: the changed ones still not manifold.
+void next_queue(const Occupancy& occupancy, std::vector<uint64_t>& changed, std::vector<uint64_t>& queue) {
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  queue.clear();
+  for (uint64_t point : changed)
+    if (!occupancy.manifold(point)) queue.push_back(point);
+}
 
 }  // namespace
 
@@ -212,9 +229,10 @@ bool manifold_occupancy(unsigned mask) { return kManifold[mask & 0xFFu]; }
 ManifoldCoreCounts make_core_manifold(LinearOctree& tree) {
   PARTET_ASSERT(tree.size() < UINT32_MAX, "more than 2^32 - 1 leaves");
   ManifoldCoreCounts counts;
-  Occupancy occupancy(tree);
+  Occupancy occupancy(tree, -1);
   occupancy.gather();
   std::vector<uint64_t> queue, changed;
+  std::vector<size_t> demoted;
   occupancy.find_non_manifold(queue);
   while (!queue.empty()) {
     ++counts.rounds;
@@ -222,15 +240,64 @@ ManifoldCoreCounts make_core_manifold(LinearOctree& tree) {
     for (uint64_t point : queue) {
       if (occupancy.manifold(point)) continue;
       ++counts.repaired;
-      counts.demoted += occupancy.repair(point, changed);
+      occupancy.repair(point, changed, demoted);
     }
-    std::sort(changed.begin(), changed.end());
-    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-    queue.clear();
-    for (uint64_t point : changed)
-      if (!occupancy.manifold(point)) queue.push_back(point);
+    next_queue(occupancy, changed, queue);
   }
+  counts.demoted = demoted.size();
   for (LeafClass c : tree.cls) counts.interior += c == LeafClass::kInterior;
+  return counts;
+}
+
+ManifoldCoreCounts make_core_manifold(const Comm& comm, LinearOctree& view) {
+  PARTET_ASSERT(view.size() < UINT32_MAX, "more than 2^32 - 1 leaves");
+  const int rank = comm.rank();
+  ManifoldCoreCounts counts;
+  Occupancy occupancy(view, rank);
+  occupancy.gather();
+  std::vector<uint64_t> queue, changed;
+  std::vector<size_t> demoted;
+  occupancy.find_non_manifold(queue);
+  for (;;) {
+    const std::vector<int64_t> waiting = comm.all_gather(static_cast<int64_t>(queue.size()));
+    if (std::all_of(waiting.begin(), waiting.end(), [](int64_t w) { return w == 0; })) break;
+    ++counts.rounds;
+    changed.clear();
+    // The ranks repair their points in rank order (the serial order), each
+    // telling every rank the leaves it demoted before the next one starts.
+    for (int r = 0; r < comm.size(); ++r) {
+      if (waiting[static_cast<size_t>(r)] == 0) continue;
+      std::string keys;
+      if (r == rank) {
+        const size_t before = demoted.size();
+        for (uint64_t point : queue) {
+          if (occupancy.manifold(point)) continue;
+          ++counts.repaired;
+          occupancy.repair(point, changed, demoted);
+        }
+        keys.resize((demoted.size() - before) * sizeof(uint64_t));
+        for (size_t k = before; k < demoted.size(); ++k)
+          std::memcpy(&keys[(k - before) * sizeof(uint64_t)], &view.key[demoted[k]], sizeof(uint64_t));
+      }
+      comm.broadcast(keys, r);
+      if (r == rank) continue;
+      for (size_t at = 0; at < keys.size(); at += sizeof(uint64_t)) {
+        uint64_t key;
+        std::memcpy(&key, &keys[at], sizeof key);
+        const auto it = std::lower_bound(view.key.begin(), view.key.end(), key);
+        if (it == view.key.end() || *it != key) continue;  // not near this rank
+        const size_t i = static_cast<size_t>(it - view.key.begin());
+        if (view.cls[i] == LeafClass::kInterior) occupancy.demote(i, changed);
+      }
+    }
+    next_queue(occupancy, changed, queue);
+  }
+  int64_t n[3] = {static_cast<int64_t>(demoted.size()), static_cast<int64_t>(counts.repaired), 0};
+  for (size_t i = 0; i < view.size(); ++i) n[2] += view.owner[i] == rank && view.cls[i] == LeafClass::kInterior;
+  comm.sum(n, 3);
+  counts.demoted = static_cast<size_t>(n[0]);
+  counts.repaired = static_cast<size_t>(n[1]);
+  counts.interior = static_cast<size_t>(n[2]);
   return counts;
 }
 

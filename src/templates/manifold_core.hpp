@@ -48,11 +48,21 @@
 // Cost: one pass over the interior leaves (7 leaf searches and 26 homes
 // each) and one scan of the per-leaf bytes; then work only around
 // non-manifold points. Deterministic.
+//
+// Distributed (make_core_manifold with a Comm): each rank holds a local view
+// (octree/ghost_layer.hpp) and tests the points homed on its own leaves,
+// whose occupancy its own and layer-1 leaves give exactly. A round repairs
+// the queued points in the serial order, which is rank order (leaves are
+// Morton-contiguous by rank): rank after rank, each broadcasting the leaves it
+// demoted before the next one starts, so every repair sees what it sees
+// serially and the classes end as the serial pass leaves them. One
+// broadcast per rank with points to repair per round; rounds are few.
 #pragma once
 
 #include <cstddef>
 
 #include "octree/octree.hpp"
+#include "parallel/comm.hpp"
 
 namespace partet {
 
@@ -67,6 +77,11 @@ struct ManifoldCoreCounts {
 // edges, and classified (classify_leaves). Only changes kInterior to
 // kTooClose.
 ManifoldCoreCounts make_core_manifold(LinearOctree& tree);
+
+// Collective: the same over all ranks, `view` being this rank's local view
+// (ghost_view) of a complete, balanced, classified distributed tree; sets
+// the classes of its own and ghost leaves. Counts are summed over ranks.
+ManifoldCoreCounts make_core_manifold(const Comm& comm, LinearOctree& view);
 
 // True when the octant occupancy `mask` of a point is a manifold (see above).
 bool manifold_occupancy(unsigned mask);

@@ -36,10 +36,12 @@ constexpr std::array<uint8_t, kFacePointCount> face_points() {
 }
 constexpr std::array<uint8_t, kFacePointCount> kFacePoints = face_points();
 
-std::vector<uint32_t> interior_leaves(const LinearOctree& tree) {
+// The interior leaves whose corners are in V: all of them, or with a part
+// those with an owner (own and layer-1 leaves of a local view).
+std::vector<uint32_t> interior_leaves(const LinearOctree& tree, int32_t part) {
   std::vector<uint32_t> interior;
   for (size_t i = 0; i < tree.size(); ++i) {
-    if (tree.cls[i] != LeafClass::kInterior) continue;
+    if (tree.cls[i] != LeafClass::kInterior || (part >= 0 && tree.owner[i] < 0)) continue;
     uint32_t a[3];
     tree.anchor(i, a[0], a[1], a[2]);
     const uint32_t edge = octant_edge(tree.level[i]);
@@ -72,11 +74,16 @@ std::vector<uint8_t> mark_corners(const LinearOctree& tree, const std::vector<ui
 }
 
 // Pass 2 for the current leaf of `around`: its face cases, and the vertices
-// it adds marked in `vertex_mask`. Returns its tet count.
+// its tets use marked in `vertex_mask` (its corners, the midpoints in V and
+// centres of its fanned faces, its centre). Returns its tet count.
 uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<uint8_t>& in_v,
                            std::vector<uint8_t>& vertex_mask, uint8_t* cases) {
   uint32_t present = 0;  // bit p: leaf point p is in V
   PointHome homes[kLeafPoints];
+  for (int c = 0; c < 8; ++c) {
+    const PointHome h = around.home(corner_point(c));
+    vertex_mask[h.leaf] |= static_cast<uint8_t>(1u << h.child);
+  }
   for (uint8_t p : kFacePoints) {
     PointHome h = around.home(p);
     homes[p] = h;
@@ -95,6 +102,10 @@ uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<ui
                                                std::to_string(around.leaf()) +
                                                " has its centre off its home's lattice");
       vertex_mask[h.leaf] |= static_cast<uint8_t>(1u << h.child);
+      for (int k = 0; k < 4; ++k) {
+        const PointHome m = homes[face_midpoint(f, k)];
+        if (c >> k & 1) vertex_mask[m.leaf] |= static_cast<uint8_t>(1u << m.child);
+      }
     } else {
       c = diagonal_case(f, around.anchor(), around.edge());
     }
@@ -172,21 +183,28 @@ void emit_tets(const LeafNeighbourhood& around, const uint8_t* cases,
 
 }  // namespace
 
-TemplateCore template_interior(const LinearOctree& tree, const RootCube& root) {
+namespace {
+
+TemplateCore template_leaves(const LinearOctree& tree, const RootCube& root, int32_t part) {
   TemplateCore core;
   const size_t n = tree.size();
   PARTET_ASSERT(n < UINT32_MAX, "more than 2^32 - 1 leaves");
-  const std::vector<uint32_t> interior = interior_leaves(tree);
-  core.leaves_templated = interior.size();
+  const std::vector<uint32_t> interior = interior_leaves(tree, part);
   LeafNeighbourhood around(tree);
 
   std::vector<uint32_t> upper_cells;
   const std::vector<uint8_t> in_v = mark_corners(tree, interior, around, upper_cells);
 
-  std::vector<uint8_t> vertex_mask = in_v;
+  // The leaves templated: all interior ones, or the part's.
+  std::vector<uint32_t> templated;  // positions in `interior`
+  for (size_t k = 0; k < interior.size(); ++k)
+    if (part < 0 || tree.owner[interior[k]] == part) templated.push_back(static_cast<uint32_t>(k));
+  core.leaves_templated = templated.size();
+
+  std::vector<uint8_t> vertex_mask(n, 0);
   core.face_case.assign(kLeafFaces * n, kNoFaceCase);
   core.leaf_first_tet.assign(n + 1, 0);
-  for (size_t k = 0; k < interior.size(); ++k) {
+  for (uint32_t k : templated) {
     const uint32_t i = interior[k];
     around.reset(i, &upper_cells[7 * k]);
     core.leaf_first_tet[i + 1] =
@@ -197,13 +215,24 @@ TemplateCore template_interior(const LinearOctree& tree, const RootCube& root) {
   number_vertices(tree, root, vertex_mask, core);
 
   core.mesh.tets.resize(4 * core.leaf_first_tet[n]);
-  for (size_t k = 0; k < interior.size(); ++k) {
+  for (uint32_t k : templated) {
     const uint32_t i = interior[k];
     around.reset(i, &upper_cells[7 * k]);
     uint32_t* out = &core.mesh.tets[4 * core.leaf_first_tet[i]];
     emit_tets(around, &core.face_case[kLeafFaces * i], vertex_mask, core.leaf_first_vertex, out);
   }
   return core;
+}
+
+}  // namespace
+
+TemplateCore template_interior(const LinearOctree& tree, const RootCube& root) {
+  return template_leaves(tree, root, -1);
+}
+
+TemplateCore template_interior(const LinearOctree& view, const RootCube& root, int32_t part) {
+  PARTET_ASSERT(part >= 0, "a part is a rank");
+  return template_leaves(view, root, part);
 }
 
 }  // namespace partet

@@ -46,4 +46,12 @@ struct TemplateCore {
 
 TemplateCore template_interior(const LinearOctree& tree, const RootCube& root);
 
+// One rank's part: `view` is its local view (octree/ghost_layer.hpp), whose
+// own leaves (owner `part`) are templated; its layer-1 leaves add their
+// corners to V. The vertices are those of the part's tets, numbered as above
+// among themselves (ascending global id), so the parts of all ranks put
+// together are template_interior of the whole tree: the same tets, in the
+// same order rank after rank, with the same global ids and coordinates.
+TemplateCore template_interior(const LinearOctree& view, const RootCube& root, int32_t part);
+
 }  // namespace partet

@@ -1,0 +1,127 @@
+// Rank 0 puts the ranks' leaves and core parts together (see
+// gather_core.hpp).
+#include "templates/gather_core.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "templates/face_rule.hpp"
+
+namespace partet {
+namespace {
+
+template <class T>
+void put(std::string& out, const std::vector<T>& v) {
+  const uint64_t n = v.size();
+  out.append(reinterpret_cast<const char*>(&n), sizeof n);
+  if (n > 0) out.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
+}
+
+template <class T>
+std::vector<T> get(const std::string& in, size_t& pos) {
+  uint64_t n = 0;
+  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated core part");
+  std::memcpy(&n, in.data() + pos, sizeof n);
+  pos += sizeof n;
+  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(T), "truncated core part");
+  std::vector<T> v(n);
+  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(T));
+  pos += n * sizeof(T);
+  return v;
+}
+
+// This rank's leaves, their face cases and tet counts, and its core part.
+std::string part_image(const LinearOctree& view, const TemplateCore& part, int rank) {
+  std::vector<uint64_t> key;
+  std::vector<uint8_t> level, face_case;
+  std::vector<LeafClass> cls;
+  std::vector<uint32_t> tets_of_leaf;
+  for (size_t i = 0; i < view.size(); ++i) {
+    if (view.owner[i] != rank) continue;
+    key.push_back(view.key[i]);
+    level.push_back(view.level[i]);
+    cls.push_back(view.cls[i]);
+    face_case.insert(face_case.end(), &part.face_case[kLeafFaces * i], &part.face_case[kLeafFaces * (i + 1)]);
+    tets_of_leaf.push_back(static_cast<uint32_t>(part.leaf_first_tet[i + 1] - part.leaf_first_tet[i]));
+  }
+  std::string out;
+  put(out, key);
+  put(out, level);
+  put(out, cls);
+  put(out, face_case);
+  put(out, tets_of_leaf);
+  put(out, part.mesh.xyz);
+  put(out, part.mesh.tets);
+  put(out, part.mesh.global_ids);
+  const std::vector<uint64_t> templated{part.leaves_templated};
+  put(out, templated);
+  return out;
+}
+
+}  // namespace
+
+void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
+                          LinearOctree& tree, TemplateCore& core) {
+  const std::vector<std::string> images = comm.gather(part_image(view, part, comm.rank()), 0);
+  tree = LinearOctree();
+  core = TemplateCore();
+  if (comm.rank() != 0) return;
+  struct Part {
+    std::vector<double> xyz;
+    std::vector<uint32_t> tets;
+    std::vector<uint64_t> ids;
+  };
+  std::vector<Part> parts(images.size());
+  std::vector<uint32_t> tets_of_leaf;
+  for (size_t r = 0; r < images.size(); ++r) {
+    size_t pos = 0;
+    const std::string& image = images[r];
+    for (uint64_t k : get<uint64_t>(image, pos)) tree.key.push_back(k);
+    for (uint8_t l : get<uint8_t>(image, pos)) tree.level.push_back(l);
+    for (LeafClass c : get<LeafClass>(image, pos)) tree.cls.push_back(c);
+    for (uint8_t c : get<uint8_t>(image, pos)) core.face_case.push_back(c);
+    for (uint32_t n : get<uint32_t>(image, pos)) tets_of_leaf.push_back(n);
+    parts[r].xyz = get<double>(image, pos);
+    parts[r].tets = get<uint32_t>(image, pos);
+    parts[r].ids = get<uint64_t>(image, pos);
+    core.leaves_templated += get<uint64_t>(image, pos).at(0);
+  }
+  tree.owner.assign(tree.size(), 0);
+  PARTET_ASSERT(std::is_sorted(tree.key.begin(), tree.key.end()), "gathered leaves out of order");
+  PARTET_ASSERT(core.face_case.size() == kLeafFaces * tree.size() && tets_of_leaf.size() == tree.size(),
+                "gathered core parts disagree with the leaves");
+
+  // Vertices: the union of the global ids, ascending.
+  std::vector<uint64_t>& ids = core.mesh.global_ids;
+  for (const Part& p : parts) ids.insert(ids.end(), p.ids.begin(), p.ids.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  core.mesh.xyz.resize(3 * ids.size());
+  for (const Part& p : parts) {
+    std::vector<uint32_t> index(p.ids.size());
+    for (size_t v = 0; v < p.ids.size(); ++v) {
+      const size_t g = static_cast<size_t>(std::lower_bound(ids.begin(), ids.end(), p.ids[v]) - ids.begin());
+      index[v] = static_cast<uint32_t>(g);
+      std::copy_n(&p.xyz[3 * v], 3, &core.mesh.xyz[3 * g]);
+    }
+    for (uint32_t v : p.tets) core.mesh.tets.push_back(index.at(v));
+  }
+  core.leaf_first_tet.assign(tree.size() + 1, 0);
+  for (size_t i = 0; i < tree.size(); ++i) core.leaf_first_tet[i + 1] = core.leaf_first_tet[i] + tets_of_leaf[i];
+  PARTET_ASSERT(4 * core.leaf_first_tet.back() == core.mesh.tets.size(), "gathered tet counts disagree");
+
+  // Home leaves: ids and leaf keys both ascend, so one sweep.
+  core.leaf_first_vertex.assign(tree.size() + 1, static_cast<uint32_t>(ids.size()));
+  size_t v = 0;
+  for (size_t i = 0; i < tree.size(); ++i) {
+    core.leaf_first_vertex[i] = static_cast<uint32_t>(v);
+    const uint64_t end = tree.key[i] + octant_key_span(tree.level[i]);
+    while (v < ids.size() && (ids[v] >> 3) < end) ++v;
+  }
+  PARTET_ASSERT(v == ids.size(), "template vertex outside the tree");
+}
+
+}  // namespace partet
