@@ -1,0 +1,117 @@
+// face_flip and edge_removal (see flips.hpp). The edge removal table is
+// best[i][k] = max over i < j < k of min(Q(i, j, k), best[i][j], best[j][k])
+// with best[i][i+1] = +inf, Q the worse of the two tets of triangle (i, j, k),
+// or -inf when either is not positive; O(n^3) for n <= 7.
+#include "optimize/flips.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "check/tet_faces.hpp"
+#include "core/predicates.hpp"
+#include "optimize/tet_quality.hpp"
+
+namespace partet {
+namespace {
+
+constexpr double kInvalid = -std::numeric_limits<double>::infinity();
+
+// Quality of tet (v0, v1, v2, v3) of `topo`, or kInvalid unless exactly positive.
+double positive_quality(const TetTopology& topo, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
+  const double *p0 = topo.point(v0), *p1 = topo.point(v1), *p2 = topo.point(v2), *p3 = topo.point(v3);
+  if (orient3d(p0, p1, p2, p3) <= 0) return kInvalid;
+  return tet_quality(p0, p1, p2, p3);
+}
+
+double existing_quality(const TetTopology& topo, uint32_t t) {
+  const uint32_t* v = topo.tet(t);
+  return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
+}
+
+void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
+  uint32_t* out = &flip.new_tets[4 * flip.new_count++];
+  out[0] = v0, out[1] = v1, out[2] = v2, out[3] = v3;
+}
+
+}  // namespace
+
+bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip) {
+  const uint32_t other = topo.twin(code);
+  if (other == TetTopology::kNone) return false;
+  const uint32_t t1 = code / 4, t2 = other / 4;
+  const uint32_t d = topo.tet(t1)[code % 4], e = topo.tet(t2)[other % 4];
+  // The face as seen from t1's outside, so (x, y, z, e) is positive.
+  uint32_t face[3];
+  for (int k = 0; k < 3; ++k) face[k] = topo.tet(t1)[kOutwardFace[code % 4][k]];
+  flip = Flip{};
+  flip.kind = FlipKind::k23;
+  flip.new_quality = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t r0 = face[k], r1 = face[(k + 1) % 3];
+    const double q = positive_quality(topo, d, e, r0, r1);
+    if (q == kInvalid) return false;
+    flip.new_quality = std::min(flip.new_quality, q);
+    add_tet(flip, d, e, r0, r1);
+  }
+  flip.old_tets[0] = t1;
+  flip.old_tets[1] = t2;
+  flip.old_count = 2;
+  flip.old_quality = std::min(existing_quality(topo, t1), existing_quality(topo, t2));
+  return true;
+}
+
+bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip) {
+  TetTopology::Ring ring;
+  if (!topo.edge_ring(t, i, j, ring)) return false;
+  const int n = ring.n;
+  const uint32_t* r = ring.vertices;
+  constexpr int N = TetTopology::kMaxRing;
+  double best[N][N];
+  int split[N][N];
+  for (int len = 1; len < n; ++len) {
+    for (int lo = 0; lo + len < n; ++lo) {
+      const int hi = lo + len;
+      best[lo][hi] = len == 1 ? std::numeric_limits<double>::infinity() : kInvalid;
+      split[lo][hi] = -1;
+      for (int mid = lo + 1; mid < hi; ++mid) {
+        double q = std::min(best[lo][mid], best[mid][hi]);
+        if (q <= best[lo][hi]) continue;
+        q = std::min(q, positive_quality(topo, r[lo], r[mid], r[hi], ring.b));
+        if (q <= best[lo][hi]) continue;
+        q = std::min(q, positive_quality(topo, r[lo], r[hi], r[mid], ring.a));
+        if (q <= best[lo][hi]) continue;
+        best[lo][hi] = q;
+        split[lo][hi] = mid;
+      }
+    }
+  }
+  if (best[0][n - 1] == kInvalid) return false;
+
+  flip = Flip{};
+  flip.kind = n == 3 ? FlipKind::k32 : n == 4 ? FlipKind::k44 : FlipKind::kEdgeRemoval;
+  flip.new_quality = best[0][n - 1];
+  // Unfold the chosen triangulation: a stack of (lo, hi) sub-polygons.
+  int stack[2 * N], top = 0;
+  stack[top++] = 0;
+  stack[top++] = n - 1;
+  while (top > 0) {
+    const int hi = stack[--top], lo = stack[--top];
+    if (hi - lo < 2) continue;
+    const int mid = split[lo][hi];
+    add_tet(flip, r[lo], r[mid], r[hi], ring.b);
+    add_tet(flip, r[lo], r[hi], r[mid], ring.a);
+    stack[top++] = lo;
+    stack[top++] = mid;
+    stack[top++] = mid;
+    stack[top++] = hi;
+  }
+  flip.old_quality = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n; ++k) {
+    flip.old_tets[k] = ring.tets[k];
+    flip.old_quality = std::min(flip.old_quality, existing_quality(topo, ring.tets[k]));
+  }
+  flip.old_count = n;
+  return true;
+}
+
+}  // namespace partet

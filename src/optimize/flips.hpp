@@ -1,0 +1,47 @@
+// Topological improvement candidates: a cavity of tets and the tets that
+// would replace it, with the worst quality (tet_quality) before and after.
+//  - face_flip: the 2-3 flip of an interior face (two tets become three
+//    around the edge joining their apexes);
+//  - edge_removal: an interior edge whose ring of n = 3..7 tets closes is
+//    removed, the ring polygon r_0..r_{n-1} retriangulated by the
+//    Klincsek / Shewchuk dynamic program that maximises the worst new tet;
+//    each polygon triangle (r_i, r_j, r_k) makes the tets (r_i, r_j, r_k, b)
+//    and (r_i, r_k, r_j, a). n = 3 is the 3-2 flip, n = 4 the 4-4 flip.
+// Every new tet is positively oriented by exact orient3d (else no
+// candidate), and the new tets' outer faces are the cavity's: boundary faces
+// and faces shared with the rest of the mesh are untouched. A candidate is
+// worth applying when new_quality > old_quality; nothing is changed here.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "optimize/tet_topology.hpp"
+
+namespace partet {
+
+enum class FlipKind : uint8_t { k23, k32, k44, kEdgeRemoval };
+
+struct Flip {
+  static constexpr int kMaxOld = TetTopology::kMaxRing;
+  static constexpr int kMaxNew = 2 * (TetTopology::kMaxRing - 2);
+  FlipKind kind = FlipKind::k23;
+  double old_quality = 0;  // worst tet of the cavity
+  double new_quality = 0;  // worst new tet
+  int old_count = 0, new_count = 0;
+  uint32_t old_tets[kMaxOld];
+  uint32_t new_tets[4 * kMaxNew];
+
+  std::span<const uint32_t> cavity() const { return {old_tets, static_cast<size_t>(old_count)}; }
+  std::span<const uint32_t> replacement() const { return {new_tets, 4 * static_cast<size_t>(new_count)}; }
+};
+
+// The 2-3 flip of face `code` (face code 4*t + f); false on a boundary face
+// or when a new tet would not be positive.
+bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip);
+
+// Removal of the edge (v[i], v[j]) of tet t; false when its ring is open or
+// longer than kMaxRing, or no retriangulation has only positive tets.
+bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip);
+
+}  // namespace partet

@@ -1,0 +1,33 @@
+// Interior vertex insertion around a bad tet (after Klingner and Shewchuk):
+// a new vertex at the tet's centroid is joined to the outer faces of a
+// cavity (the tet alone, or the tet with its face neighbours), the new
+// vertex is then smoothed (smoothing.hpp), and the insertion is kept only
+// if the worst new tet beats the worst tet of the cavity and the total
+// shortfall (sum of bar - quality over the tets below bar = min(target,
+// quality of 20 degrees)) does not grow: one bad tet is not traded for many
+// mediocre ones. Otherwise the
+// cavity and the vertex arrays are restored exactly. Every new tet is
+// positive by exact orient3d (the cavity is star-shaped from the point).
+// The cavity's outer faces, boundary faces among them, stay as they are,
+// and a cavity with a vertex on none of them (which would vanish) is not
+// used.
+//
+// New vertices get global id kOptimizerVertexId | (vertex index) when the
+// mesh has global ids: bit 63 and bit 61 set, disjoint from lattice keys
+// (bit 63 clear), surface ids (index below 2^32) and front Steiner ids
+// (bit 62 set).
+#pragma once
+
+#include <cstdint>
+
+#include "optimize/smoothing.hpp"
+#include "optimize/tet_topology.hpp"
+
+namespace partet {
+
+inline constexpr uint64_t kOptimizerVertexId = (uint64_t{1} << 63) | (uint64_t{1} << 61);
+
+// Tries the cavities of tet t in turn; true when a vertex was inserted.
+bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch);
+
+}  // namespace partet

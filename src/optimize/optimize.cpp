@@ -1,0 +1,152 @@
+// optimize_mesh (see optimize.hpp). A pass:
+//  1. topology: the tets below the target, worst first (ties by slot), each
+//     offered every flip of its 6 edges and 4 faces; the candidate with the
+//     best new worst quality is applied if it beats its cavity's worst. New
+//     tets still below the target join the end of the work list, whose
+//     length is capped.
+//  2. insertion: a new interior vertex for each tet still below the target,
+//     worst first, where it pays (insertion.hpp);
+//  3. smoothing: the free vertices of the tets still below the target, in
+//     index order (inserted vertices are free).
+// Each applied change strictly raises the ascending sequence of tet
+// qualities in lexicographic order; with the caps this bounds the work.
+#include "optimize/optimize.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "optimize/flips.hpp"
+#include "optimize/insertion.hpp"
+#include "optimize/smoothing.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize/tet_topology.hpp"
+
+namespace partet {
+namespace {
+
+// Local vertex pairs of the six edges of a tet.
+constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+// Work list entries per tet below the target at the start of a pass.
+constexpr size_t kWorkPerBadTet = 4;
+
+double quality_of(const TetTopology& topo, uint32_t t) {
+  const uint32_t* v = topo.tet(t);
+  return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
+}
+
+// Alive tets below `target`, worst first.
+std::vector<uint32_t> tets_below(const TetTopology& topo, double target) {
+  std::vector<std::pair<double, uint32_t>> bad;
+  for (uint32_t t = 0; t < topo.slots(); ++t) {
+    if (!topo.alive(t)) continue;
+    const double q = quality_of(topo, t);
+    if (q < target) bad.emplace_back(q, t);
+  }
+  std::sort(bad.begin(), bad.end());
+  std::vector<uint32_t> tets(bad.size());
+  for (size_t i = 0; i < bad.size(); ++i) tets[i] = bad[i].second;
+  return tets;
+}
+
+void count(const Flip& flip, OptimizeStats& stats) {
+  switch (flip.kind) {
+    case FlipKind::k23: ++stats.flips_23; break;
+    case FlipKind::k32: ++stats.flips_32; break;
+    case FlipKind::k44: ++stats.flips_44; break;
+    case FlipKind::kEdgeRemoval: ++stats.edge_removals; break;
+  }
+}
+
+// Applies the best improving flip around tet t; the new tets go to `created`.
+bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::vector<uint32_t>& created) {
+  Flip best, candidate;
+  bool found = false;
+  auto consider = [&](bool valid) {
+    if (valid && candidate.new_quality > candidate.old_quality &&
+        (!found || candidate.new_quality > best.new_quality)) {
+      best = candidate;
+      found = true;
+    }
+  };
+  for (const auto& e : kEdges) consider(edge_removal(topo, t, e[0], e[1], candidate));
+  for (uint32_t f = 0; f < 4; ++f) consider(face_flip(topo, 4 * t + f, candidate));
+  if (!found) return false;
+  topo.replace(best.cavity(), best.replacement(), created);
+  count(best, stats);
+  return true;
+}
+
+// Step 1 of a pass; the number of flips applied.
+size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats) {
+  std::vector<uint32_t> work = tets_below(topo, target);
+  const size_t cap = kWorkPerBadTet * work.size();
+  std::vector<uint32_t> created;
+  size_t applied = 0;
+  for (size_t i = 0; i < work.size() && i < cap; ++i) {
+    const uint32_t t = work[i];
+    if (!topo.alive(t) || quality_of(topo, t) >= target) continue;
+    created.clear();
+    if (!improve_topology(topo, t, stats, created)) continue;
+    ++applied;
+    for (uint32_t c : created)
+      if (quality_of(topo, c) < target) work.push_back(c);
+  }
+  return applied;
+}
+
+// Step 2 of a pass; the number of vertices inserted.
+size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratch) {
+  size_t inserted = 0;
+  for (uint32_t t : tets_below(topo, target))
+    if (topo.alive(t) && quality_of(topo, t) < target) inserted += insert_vertex(topo, t, target, scratch);
+  return inserted;
+}
+
+// Step 3 of a pass; the number of vertices moved.
+size_t smoothing_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen,
+                      SmoothingScratch& scratch) {
+  std::vector<uint32_t> vertices;
+  for (uint32_t t : tets_below(topo, target))
+    for (int k = 0; k < 4; ++k)
+      if (topo.tet(t)[k] >= frozen.size() || !frozen[topo.tet(t)[k]]) vertices.push_back(topo.tet(t)[k]);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  size_t moved = 0;
+  for (uint32_t v : vertices) moved += smooth_vertex(topo, v, scratch);
+  return moved;
+}
+
+}  // namespace
+
+OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const std::vector<uint8_t>* frozen) {
+  Stopwatch clock;
+  OptimizeStats stats;
+  stats.before = measure_quality(mesh);
+  if (options.passes > 0 && mesh.num_tets() > 0) {
+    PARTET_ASSERT(!frozen || frozen->size() == mesh.num_vertices(), "one frozen flag per vertex");
+    TetTopology topo(mesh);
+    std::vector<uint8_t> fixed = topo.boundary_vertices();
+    for (uint32_t v : mesh.tris) fixed[v] = 1;
+    if (frozen)
+      for (size_t v = 0; v < fixed.size(); ++v) fixed[v] |= (*frozen)[v] != 0;
+    const double target = quality_of_angle(options.quality_target_deg);
+    SmoothingScratch scratch;
+    for (int pass = 0; pass < options.passes; ++pass) {
+      ++stats.passes;
+      const size_t flips = topology_pass(topo, target, stats);
+      const size_t inserted = options.insert_vertices ? insertion_pass(topo, target, scratch) : 0;
+      const size_t moved = smoothing_pass(topo, target, fixed, scratch);
+      stats.vertices_inserted += inserted;
+      stats.vertices_moved += moved;
+      if (flips == 0 && inserted == 0 && moved == 0) break;
+    }
+    topo.compact();
+  }
+  stats.after = options.passes > 0 ? measure_quality(mesh) : stats.before;
+  stats.seconds = clock.wall();
+  return stats;
+}
+
+}  // namespace partet

@@ -1,0 +1,52 @@
+// Quality optimization of a finished, valid tet mesh, with its boundary
+// untouched: passes of topological improvement (2-3 flips, and edge removal
+// with its 3-2 and 4-4 special cases, see flips.hpp) on the tets below the
+// quality target, worst first, then interior vertex insertion where it pays
+// (insertion.hpp), then optimization-based smoothing (smoothing.hpp) of the
+// free vertices of the tets still below the target.
+//
+// Frozen vertices never move: those of boundary faces (faces of exactly one
+// tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
+// a rank boundary shares). Boundary faces keep their three vertices and
+// their side. No vertex is removed: inserted vertices are appended to xyz
+// (and to global_ids when the mesh has them), so existing indices stay. Every change keeps every tet
+// positive by exact orient3d and strictly raises the worst quality of the
+// tets it replaces or moves; a pass has a bounded amount of work and there
+// are at most `passes` passes. Deterministic: no hashing order, no threads,
+// no randomness.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "check/quality.hpp"
+#include "core/tet_mesh.hpp"
+
+namespace partet {
+
+struct OptimizeOptions {
+  int passes = 3;  // 0: measure only
+  // Tets whose dihedral angles all lie in [target, 180 - target] degrees
+  // are left as they are; the optimizer works on the others.
+  double quality_target_deg = 40;
+  bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
+};
+
+struct OptimizeStats {
+  QualityStats before, after;
+  size_t flips_23 = 0;
+  size_t flips_32 = 0;
+  size_t flips_44 = 0;
+  size_t edge_removals = 0;  // edges with rings of 5 to 7 tets
+  size_t vertices_inserted = 0;
+  size_t vertices_moved = 0;
+  int passes = 0;  // passes run
+  double seconds = 0;
+};
+
+// `frozen`, when given, has one flag per vertex (non-zero: frozen).
+OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options,
+                            const std::vector<uint8_t>* frozen = nullptr);
+
+}  // namespace partet

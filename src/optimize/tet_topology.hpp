@@ -1,0 +1,98 @@
+// A tet mesh opened for local changes: the tets of a TetMesh with free
+// slots, face adjacency and one incident tet per vertex. Face code 4*t + f
+// names the face of tet t opposite its local vertex f; twin(code) is the code
+// of the same face in the neighbouring tet, or kNone on the boundary (a face
+// of exactly one tet).
+//
+// The only change is replace(): a set of tets (a cavity) is swapped for new
+// tets whose outer faces are exactly the cavity's outer faces, so the
+// boundary, and the faces shared with the rest of the mesh, never change.
+// Callers check orientation (exactly) before replacing; replace() checks the
+// face matching and throws InternalError when it does not close.
+//
+// Contract: the mesh is valid (positive tets, each face in at most two tets).
+// Vertex coordinates stay in the TetMesh (smoothing moves them there);
+// compact() writes the tets back without free slots, in slot order, and
+// leaves the topology empty.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/tet_mesh.hpp"
+
+namespace partet {
+
+class TetTopology {
+ public:
+  static constexpr uint32_t kNone = UINT32_MAX;
+  static constexpr int kMaxRing = 7;  // longest edge ring edge_ring() walks
+
+  explicit TetTopology(TetMesh& mesh);
+
+  uint32_t slots() const { return static_cast<uint32_t>(mesh_.tets.size() / 4); }
+  bool alive(uint32_t t) const { return mesh_.tets[4 * t] != kNone; }
+  const uint32_t* tet(uint32_t t) const { return &mesh_.tets[4 * t]; }
+  uint32_t twin(uint32_t code) const { return twin_[code]; }
+  const double* point(uint32_t v) const { return &mesh_.xyz[3 * v]; }
+  double* point(uint32_t v) { return &mesh_.xyz[3 * v]; }
+  size_t num_vertices() const { return mesh_.num_vertices(); }
+
+  // Appends a vertex at p (no tet has it yet; with global ids, `global_id`
+  // is its id); remove_last_vertex() drops it again once no tet has it.
+  uint32_t add_vertex(const double* p, uint64_t global_id);
+  void remove_last_vertex();
+
+  // Vertices on boundary faces (faces of exactly one tet): 1, else 0.
+  std::vector<uint8_t> boundary_vertices() const;
+
+  // Replaces the alive, distinct tets `old_tets` by `new_tets` (4 vertex
+  // indices each); the slots of the new tets are appended to `created`.
+  // New tet i takes the slot of old tet i (then free slots, last freed
+  // first, then new ones), so replacing m >= n tets by n and then the
+  // created tets by the n old ones puts every old tet back in its slot.
+  void replace(std::span<const uint32_t> old_tets, std::span<const uint32_t> new_tets,
+               std::vector<uint32_t>& created);
+
+  // The tets around the edge (v[i], v[j]) of tet t, when they close a ring
+  // of at most kMaxRing tets: a = v[i], b = v[j], ring vertices r_0..r_{n-1}
+  // and tets[k] = (a, b, r_k, r_{k+1 mod n}) as a positive tet. False for a
+  // boundary edge or a longer ring.
+  struct Ring {
+    uint32_t a = 0, b = 0;
+    int n = 0;
+    uint32_t vertices[kMaxRing];
+    uint32_t tets[kMaxRing];
+  };
+  bool edge_ring(uint32_t t, int i, int j, Ring& ring) const;
+
+  // The tets having vertex v, appended to `star` (cleared first) in a
+  // deterministic breadth-first order from v's incident tet.
+  void vertex_star(uint32_t v, std::vector<uint32_t>& star) const;
+
+  // Writes the alive tets back to the mesh's tet array, in slot order.
+  void compact();
+
+ private:
+  void link(uint32_t code, uint32_t other) {
+    twin_[code] = other;
+    if (other != kNone) twin_[other] = code;
+  }
+
+  TetMesh& mesh_;
+  std::vector<uint32_t> twin_;         // per face code
+  std::vector<uint32_t> vertex_tet_;   // an alive tet having the vertex, or kNone
+  std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
+  mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk
+  mutable uint32_t stamp_ = 0;
+};
+
+// Local index of vertex v in tet t (0..3), or -1.
+inline int local_index(const uint32_t* tet, uint32_t v) {
+  for (int k = 0; k < 4; ++k)
+    if (tet[k] == v) return k;
+  return -1;
+}
+
+}  // namespace partet

@@ -1,0 +1,145 @@
+// The flips on hand-made configurations: 2-3, 3-2, 4-4 and edge removal
+// around rings of 5 to 7 tets each improve the worst tet, keep every tet
+// positive, keep the boundary faces, and leave a valid mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "check/validate.hpp"
+#include "optimize/flips.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize/tet_topology.hpp"
+#include "optimize_test_util.hpp"
+
+namespace partet {
+namespace {
+
+using test::add_positive_tet;
+using test::all_positive;
+using test::boundary_faces;
+using test::worst_quality;
+
+// Applies `flip` to `mesh` through a topology; checks validity, boundary and improvement.
+void apply_and_check(TetMesh& mesh, TetTopology& topo, const Flip& flip) {
+  const auto boundary = boundary_faces(mesh);
+  const double before = worst_quality(mesh);
+  EXPECT_GT(flip.new_quality, flip.old_quality);
+  std::vector<uint32_t> created;
+  topo.replace(flip.cavity(), flip.replacement(), created);
+  EXPECT_EQ(created.size(), static_cast<size_t>(flip.new_count));
+  topo.compact();
+  EXPECT_TRUE(all_positive(mesh));
+  EXPECT_EQ(boundary_faces(mesh), boundary);
+  EXPECT_GT(worst_quality(mesh), before);
+  EXPECT_NEAR(worst_quality(mesh), flip.new_quality, 1e-12);
+  ValidationResult r = validate_mesh(mesh, nullptr);
+  EXPECT_TRUE(r.valid) << format_text(r);
+}
+
+// A triangle in z = 0 (vertices 0, 1, 2) with apexes 3 at +h and 4 at -h.
+TetMesh bipyramid(double h) {
+  TetMesh m;
+  m.xyz = {0, 0, 0, 1, 0, 0, 0.5, std::sqrt(0.75), 0, 0.5, 0.3, h, 0.5, 0.3, -h};
+  return m;
+}
+
+TEST(Flips, TwoThreeFlipOfAFlatPair) {
+  TetMesh m = bipyramid(0.15);
+  add_positive_tet(m, 0, 1, 2, 3);
+  add_positive_tet(m, 0, 1, 2, 4);
+  TetTopology topo(m);
+  Flip flip;
+  int found = 0;
+  for (uint32_t code = 0; code < 8; ++code)
+    if (face_flip(topo, code, flip)) {
+      ++found;
+      EXPECT_EQ(flip.kind, FlipKind::k23);
+      EXPECT_EQ(flip.new_count, 3);
+      apply_and_check(m, topo, flip);
+      break;
+    }
+  EXPECT_EQ(found, 1);
+  EXPECT_EQ(m.num_tets(), 3u);
+}
+
+TEST(Flips, NoTwoThreeFlipOnABoundaryFaceOrAcrossANonConvexPair) {
+  TetMesh m = bipyramid(0.35);
+  m.xyz[12] = 3;  // apex 4 far outside the prism over the triangle: edge 3-4 misses it
+  add_positive_tet(m, 0, 1, 2, 3);
+  add_positive_tet(m, 0, 1, 2, 4);
+  TetTopology topo(m);
+  Flip flip;
+  for (uint32_t code = 0; code < 8; ++code) EXPECT_FALSE(face_flip(topo, code, flip)) << code;
+}
+
+// Three tets around the long edge 3-4 of a tall bipyramid.
+TEST(Flips, ThreeTwoFlipOfANeedleRing) {
+  TetMesh m = bipyramid(1.5);
+  add_positive_tet(m, 3, 4, 0, 1);
+  add_positive_tet(m, 3, 4, 1, 2);
+  add_positive_tet(m, 3, 4, 2, 0);
+  TetTopology topo(m);
+  Flip flip;
+  ASSERT_TRUE(edge_removal(topo, 0, 0, 1, flip));
+  EXPECT_EQ(flip.kind, FlipKind::k32);
+  EXPECT_EQ(flip.old_count, 3);
+  EXPECT_EQ(flip.new_count, 2);
+  apply_and_check(m, topo, flip);
+}
+
+// A ring of n vertices (radii rx, ry) in z = 0 around the edge from
+// (0, 0, -h) to (0, 0, h): vertices 0..n-1 on the ring, n and n+1 the edge.
+TetMesh ring_mesh(int n, double rx, double ry, double h) {
+  TetMesh m;
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * std::numbers::pi * k / n;
+    m.xyz.insert(m.xyz.end(), {rx * std::cos(angle), ry * std::sin(angle), 0.01 * (k % 2)});
+  }
+  m.xyz.insert(m.xyz.end(), {0, 0, -h, 0, 0, h});
+  const uint32_t a = static_cast<uint32_t>(n), b = a + 1;
+  for (int k = 0; k < n; ++k) add_positive_tet(m, a, b, static_cast<uint32_t>(k), static_cast<uint32_t>((k + 1) % n));
+  return m;
+}
+
+TEST(Flips, FourFourFlipTurnsTheAxisOfAThinOctahedron) {
+  TetMesh m = ring_mesh(4, 1, 0.3, 1);
+  TetTopology topo(m);
+  const uint32_t* v = topo.tet(0);
+  Flip flip;
+  ASSERT_TRUE(edge_removal(topo, 0, local_index(v, 4), local_index(v, 5), flip));
+  EXPECT_EQ(flip.kind, FlipKind::k44);
+  EXPECT_EQ(flip.new_count, 4);
+  apply_and_check(m, topo, flip);
+}
+
+class EdgeRemoval : public testing::TestWithParam<int> {};
+
+TEST_P(EdgeRemoval, RemovesALongEdgeThroughARing) {
+  const int n = GetParam();
+  TetMesh m = ring_mesh(n, 1, 0.8, 4);
+  TetTopology topo(m);
+  const uint32_t* v = topo.tet(0);
+  Flip flip;
+  ASSERT_TRUE(edge_removal(topo, 0, local_index(v, static_cast<uint32_t>(n)),
+                           local_index(v, static_cast<uint32_t>(n + 1)), flip));
+  EXPECT_EQ(flip.kind, FlipKind::kEdgeRemoval);
+  EXPECT_EQ(flip.old_count, n);
+  EXPECT_EQ(flip.new_count, 2 * (n - 2));
+  apply_and_check(m, topo, flip);
+}
+
+INSTANTIATE_TEST_SUITE_P(Flips, EdgeRemoval, testing::Values(5, 6, 7));
+
+TEST(Flips, NoEdgeRemovalOnABoundaryEdgeOrALongRing) {
+  TetMesh m = ring_mesh(8, 1, 1, 0.25);
+  TetTopology topo(m);
+  const uint32_t* v = topo.tet(0);
+  Flip flip;
+  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 9), flip));  // 8 tets
+  // Every other edge of the ring tets lies on the boundary.
+  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 0), flip));
+}
+
+}  // namespace
+}  // namespace partet

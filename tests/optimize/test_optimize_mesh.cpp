@@ -1,0 +1,158 @@
+// optimize_mesh on meshes partet makes: finished meshes (checked against
+// their surface; partial ones, --keep-partial, where meshing cannot finish
+// yet) and the templated core (--stop-after templates).
+// The result is valid, its boundary faces and frozen vertices are the same
+// bit for bit, the smallest dihedral angle is no worse, the mean radius
+// ratio no worse (better where the mesh has bad tets), and two runs give
+// the same mesh. Also the command line's --optimize options.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstring>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+
+#include "check/validate.hpp"
+#include "io/mesh_file.hpp"
+#include "optimize/optimize.hpp"
+#include "optimize/tet_topology.hpp"
+#include "optimize_test_util.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+using test::boundary_faces;
+using test::data_path;
+using test::run_partet;
+using test::scratch_dir;
+
+// Meshes `surface` with partet (`extra` options, no optimization) and reads
+// the result; when meshing cannot finish (exit 3), the partial mesh, whose
+// boundary includes the front left. `finished` says which.
+TetMesh unoptimized(const std::string& surface, const std::string& extra, bool* finished = nullptr) {
+  const std::string dir = scratch_dir("optimize_" + std::to_string(std::hash<std::string>{}(surface + extra)));
+  const std::string out = dir + "/mesh.vtu";
+  auto r = run_partet(data_path(surface) + " -o " + out + " --no-optimize --keep-partial -q " + extra);
+  EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.output;
+  if (finished) *finished = r.exit_code == 0;
+  return read_volume_file(out);
+}
+
+struct Case {
+  std::string surface;
+  std::string extra;
+  bool against_surface;  // a finished mesh is checked against its surface
+  bool improves;         // has bad tets that can be improved
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.surface << " " << c.extra; }
+
+class OptimizeCorpus : public testing::TestWithParam<Case> {};
+
+TEST_P(OptimizeCorpus, ValidSameBoundaryNoWorse) {
+  const Case& c = GetParam();
+  bool finished = false;
+  TetMesh mesh = unoptimized(c.surface, c.extra, &finished);
+  ASSERT_GT(mesh.num_tets(), 0u);
+  const TetMesh original = mesh;
+  std::vector<uint8_t> boundary;
+  {
+    TetMesh copy = mesh;
+    boundary = TetTopology(copy).boundary_vertices();
+  }
+
+  OptimizeStats stats = optimize_mesh(mesh, OptimizeOptions{});
+  std::optional<SurfaceMesh> surface;
+  if (c.against_surface && finished) surface = read_surface_file(data_path(c.surface));
+  ValidationResult r = validate_mesh(mesh, surface ? &*surface : nullptr);
+  EXPECT_TRUE(r.valid) << format_text(r);
+  EXPECT_EQ(r.unused_vertices, validate_mesh(original, nullptr).unused_vertices);  // none added
+  EXPECT_EQ(boundary_faces(mesh), boundary_faces(original));
+  ASSERT_GE(mesh.num_vertices(), original.num_vertices());
+  for (size_t v = 0; v < original.num_vertices(); ++v) {
+    if (boundary[v]) {
+      EXPECT_EQ(std::memcmp(mesh.point(v), original.point(v), 3 * sizeof(double)), 0) << v;
+    }
+  }
+  EXPECT_EQ(mesh.global_ids.size(), original.global_ids.empty() ? 0 : mesh.num_vertices());
+
+  EXPECT_GE(stats.after.min_dihedral_deg, stats.before.min_dihedral_deg);
+  EXPECT_LE(stats.after.dihedral_under_10 * stats.before.tets, stats.before.dihedral_under_10 * stats.after.tets);
+  if (c.improves && stats.before.dihedral_under_20 > 0)
+    EXPECT_GT(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
+  else
+    EXPECT_GE(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
+  EXPECT_EQ(stats.after.tets, mesh.num_tets());
+  EXPECT_LE(stats.passes, OptimizeOptions{}.passes);
+
+  // Deterministic.
+  TetMesh again = original;
+  optimize_mesh(again, OptimizeOptions{});
+  EXPECT_EQ(again.xyz, mesh.xyz);
+  EXPECT_EQ(again.tets, mesh.tets);
+  EXPECT_EQ(again.global_ids, mesh.global_ids);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Optimize, OptimizeCorpus,
+    testing::Values(Case{"good/cube.off", "", true, false}, Case{"good/star.off", "", true, false},
+                    Case{"good/icosahedron.off", "", true, true}, Case{"good/pipe.off", "", true, true},
+                    Case{"good/tripod.off", "", true, true}, Case{"good/u.off", "", true, true},
+                    Case{"good/ellipsoid.off", "", true, true}, Case{"good/eight.off", "", true, true},
+                    Case{"good/dragknob.off", "", true, true}, Case{"fixable/tet-shuffled.off", "", false, false},
+                    Case{"good/sphere966.off", "--stop-after templates", false, false}),
+    [](const testing::TestParamInfo<Case>& info) {
+      std::string name = info.param.surface.substr(info.param.surface.find('/') + 1);
+      name = name.substr(0, name.find('.')) + (info.param.extra.empty() ? "" : "_core");
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+// The rank-boundary use: every vertex frozen leaves only flips, and the
+// coordinates do not change at all.
+TEST(OptimizeMesh, AllFrozenOnlyFlips) {
+  TetMesh mesh = unoptimized("good/pipe.off", "");
+  const TetMesh original = mesh;
+  std::vector<uint8_t> frozen(mesh.num_vertices(), 1);
+  OptimizeOptions options;
+  options.insert_vertices = false;
+  OptimizeStats stats = optimize_mesh(mesh, options, &frozen);
+  EXPECT_EQ(mesh.xyz, original.xyz);
+  EXPECT_EQ(stats.vertices_moved, 0u);
+  EXPECT_GT(stats.flips_23 + stats.flips_32 + stats.flips_44 + stats.edge_removals, 0u);
+  EXPECT_TRUE(validate_mesh(mesh, nullptr).valid);
+  EXPECT_EQ(boundary_faces(mesh), boundary_faces(original));
+}
+
+TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
+  const std::string dir = scratch_dir("optimize_cli");
+  const std::string surface = data_path("good/icosahedron.off");
+  auto r = run_partet(surface + " -o " + dir + "/p.vtu --optimize 2 --quality-target 30 --report " + dir + "/r.json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(run_partet("check " + dir + "/p.vtu --surface " + surface).exit_code, 0);
+  auto report = nlohmann::json::parse(test::read_text(dir + "/r.json"));
+  bool found = false;
+  for (const auto& step : report["steps"]) {
+    if (step["name"] != "optimize") continue;
+    found = true;
+    const auto& c = step["counts"];
+    EXPECT_LE(c["passes"].get<int>(), 2);
+    EXPECT_GE(c["min dihedral after"].get<double>(), c["min dihedral before"].get<double>());
+    EXPECT_GT(c["mean radius ratio after"].get<double>(), c["mean radius ratio before"].get<double>());
+  }
+  EXPECT_TRUE(found);
+
+  auto off = run_partet(surface + " -o " + dir + "/q.vtu --no-optimize --report " + dir + "/s.json");
+  ASSERT_EQ(off.exit_code, 0) << off.output;
+  const auto unoptimized_report = nlohmann::json::parse(test::read_text(dir + "/s.json"));
+  for (const auto& step : unoptimized_report["steps"]) EXPECT_NE(step["name"], "optimize");
+  EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --quality-target 95").exit_code, 2);
+  EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --optimize -1").exit_code, 2);
+}
+
+}  // namespace
+}  // namespace partet

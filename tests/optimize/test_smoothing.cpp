@@ -1,0 +1,115 @@
+// Smoothing of one interior vertex, the quality measure, and the frozen
+// flags of optimize_mesh on a cube coned to a perturbed centre.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "check/quality.hpp"
+#include "check/validate.hpp"
+#include "optimize/optimize.hpp"
+#include "optimize/smoothing.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize_test_util.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+using test::all_positive;
+using test::boundary_faces;
+using test::worst_quality;
+
+// The unit cube's 12 boundary triangles coned to an interior vertex 8 at c.
+TetMesh coned_cube(double x, double y, double z) {
+  SurfaceMesh box = test::box_surface();
+  TetMesh m;
+  m.xyz = box.xyz;
+  m.xyz.insert(m.xyz.end(), {x, y, z});
+  m.tris = box.tris;
+  for (size_t t = 0; t < box.num_triangles(); ++t)
+    m.tets.insert(m.tets.end(), {box.tris[3 * t], box.tris[3 * t + 2], box.tris[3 * t + 1], 8});
+  return m;
+}
+
+TEST(TetQuality, RegularIsOneFlatIsZeroInvertedIsNegative) {
+  const double p[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  const double (&a)[3] = p[0], (&b)[3] = p[1], (&c)[3] = p[2], (&d)[3] = p[3];
+  const double regular = orient3d(a, b, c, d) > 0 ? tet_quality(a, b, c, d) : tet_quality(a, c, b, d);
+  EXPECT_NEAR(regular, 1, 1e-12);
+  const double flat[3] = {1.0 / 3, 1.0 / 3, -1.0 / 3};  // in the plane of a, b, c
+  EXPECT_LE(std::fabs(tet_quality(a, b, c, flat)), 1e-12);
+  EXPECT_LT(orient3d(a, b, c, d) > 0 ? tet_quality(a, c, b, d) : tet_quality(a, b, c, d), 0);
+  // All dihedral angles of a tet scoring quality_of_angle(30) lie in [30, 150].
+  const double q30 = quality_of_angle(30);
+  const double s[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.2, 0.2, 0.3}};
+  const TetShape shape = tet_shape(s[0], s[1], s[2], s[3]);
+  const bool inside = shape.min_dihedral_rad >= std::numbers::pi / 6 && shape.max_dihedral_rad <= 5 * std::numbers::pi / 6;
+  EXPECT_EQ(tet_quality(s[0], s[1], s[2], s[3]) >= q30, inside);
+}
+
+TEST(Smoothing, MovesAPerturbedCentreAndImprovesTheWorstTet) {
+  TetMesh m = coned_cube(0.85, 0.8, 0.75);
+  ASSERT_TRUE(all_positive(m));
+  const double before = worst_quality(m);
+  const std::vector<double> corners(m.xyz.begin(), m.xyz.begin() + 24);
+  TetTopology topo(m);
+  SmoothingScratch scratch;
+  EXPECT_TRUE(smooth_vertex(topo, 8, scratch));
+  EXPECT_TRUE(all_positive(m));
+  EXPECT_GT(worst_quality(m), before + 0.1);
+  EXPECT_EQ(std::memcmp(corners.data(), m.xyz.data(), 24 * sizeof(double)), 0);
+  // Near the centre now, where the worst tet is best.
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.xyz[24 + i], 0.5, 0.1);
+  // A second call cannot make it worse.
+  const double after = worst_quality(m);
+  smooth_vertex(topo, 8, scratch);
+  EXPECT_GE(worst_quality(m), after);
+}
+
+TEST(Smoothing, NeverAcceptsAnInvalidOrWorsePosition) {
+  // The centre itself is optimal: nothing to gain.
+  TetMesh m = coned_cube(0.5, 0.5, 0.5);
+  TetTopology topo(m);
+  SmoothingScratch scratch;
+  const double before = worst_quality(m);
+  smooth_vertex(topo, 8, scratch);
+  EXPECT_GE(worst_quality(m), before);
+  EXPECT_NEAR(m.xyz[24], 0.5, 1e-6);
+}
+
+TEST(OptimizeMesh, FrozenVerticesStayAndFreeOnesMove) {
+  TetMesh m = coned_cube(0.85, 0.8, 0.75);
+  const TetMesh original = m;
+  std::vector<uint8_t> frozen(9, 0);
+  frozen[8] = 1;
+  OptimizeOptions options;
+  options.insert_vertices = false;
+  optimize_mesh(m, options, &frozen);
+  EXPECT_EQ(m.xyz, original.xyz);
+
+  OptimizeStats stats = optimize_mesh(m, options);
+  EXPECT_NE(m.xyz[24], original.xyz[24]);
+  EXPECT_GT(stats.vertices_moved, 0u);
+  EXPECT_GT(stats.after.radius_ratio_min, stats.before.radius_ratio_min);
+  EXPECT_EQ(std::memcmp(m.xyz.data(), original.xyz.data(), 24 * sizeof(double)), 0);
+  EXPECT_EQ(boundary_faces(m), boundary_faces(original));
+  ValidationResult r = validate_mesh(m, nullptr);
+  EXPECT_TRUE(r.valid) << format_text(r);
+}
+
+TEST(OptimizeMesh, NoPassesOnlyMeasures) {
+  TetMesh m = coned_cube(0.85, 0.8, 0.75);
+  const TetMesh original = m;
+  OptimizeOptions options;
+  options.passes = 0;
+  OptimizeStats stats = optimize_mesh(m, options);
+  EXPECT_EQ(m.xyz, original.xyz);
+  EXPECT_EQ(m.tets, original.tets);
+  EXPECT_EQ(stats.passes, 0);
+  EXPECT_EQ(stats.before.tets, 12u);
+  EXPECT_EQ(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
+}
+
+}  // namespace
+}  // namespace partet
