@@ -55,13 +55,29 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
       ->check(CLI::IsMember({"surface", "templates"}))->type_name("STEP");
   app.add_option("--front-out", o.front_out, "Write the initial front (surface + core faces) as a surface file")
       ->type_name("FILE");
+  bool no_treeless = false;
+  app.add_flag("--no-treeless", no_treeless,
+               "Skip the tree-less face removals (new vertices, tet deletion): what the tree-supported removals "
+               "leave is reported as an unfinished front (exit 3); for diagnosis");
   app.add_flag("--keep-partial", o.keep_partial,
                "When meshing cannot finish (exit 3), write the tets made to OUTPUT and the front left to "
                "OUTPUT's stem + .front.off");
+  app.add_option("--optimize", o.optimize_passes,
+                 "Quality optimization passes on the finished mesh (flips, edge removal, vertex insertion, "
+                 "smoothing; the surface is never changed); 0 for none")
+      ->type_name("N")->check(CLI::NonNegativeNumber)->capture_default_str();
+  bool no_optimize = false;
+  app.add_flag("--no-optimize", no_optimize, "Skip quality optimization (same as --optimize 0)");
+  app.add_option("--quality-target", o.quality_target,
+                 "Optimization target, in degrees: tets whose dihedral angles all lie in [X, 180 - X] are left "
+                 "alone (0 to 90)")
+      ->type_name("X")->check(CLI::Range(0.0, 90.0))->capture_default_str();
   app.add_flag("--ascii", o.ascii, "Write Gmsh .msh as text instead of binary");
   app.add_flag("-q,--quiet", o.quiet, "Print errors only");
   app.add_flag("-v,--verbose", o.verbose, "Every rank prints its progress, not only rank 0");
   if (int code = parse(app, argc, argv, comm); code >= 0) return code;
+  if (no_optimize) o.optimize_passes = 0;
+  o.treeless = !no_treeless;
   if (stop == "surface") o.stop_after = partet::StopAfter::kSurface;
   if (stop == "templates") o.stop_after = partet::StopAfter::kTemplates;
   partet::Log log(comm.rank(), o.quiet, o.verbose);

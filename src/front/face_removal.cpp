@@ -43,7 +43,7 @@ class Remover {
   Remover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
       : front_(front), tree_(tree), root_(root), out_(out), options_(options) {}
 
-  RemovalCounts run();
+  RemovalCounts run(const std::vector<uint32_t>* seeds);
 
  private:
   // Tries one face; true when a tet was made.
@@ -139,7 +139,7 @@ bool Remover::try_face(uint32_t f) {
   return false;
 }
 
-RemovalCounts Remover::run() {
+RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   const size_t have = out_.num_vertices();
   PARTET_ASSERT(have <= front_.num_vertices(), "output mesh has more vertices than the front");
   const bool ids = out_.global_ids.size() == have;
@@ -148,8 +148,13 @@ RemovalCounts Remover::run() {
 
   failed_at_.assign(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
-  for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
-    if (front_.alive(f)) queue_.push_back(f);
+  if (seeds) {
+    for (uint32_t f : *seeds)
+      if (front_.alive(f)) queue_.push_back(f);
+  } else {
+    for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
+      if (front_.alive(f)) queue_.push_back(f);
+  }
   std::vector<uint32_t> waiting;
   while (!queue_.empty()) {
     ++counts_.passes;
@@ -200,9 +205,9 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
 }
 
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                          const RemovalOptions& options) {
+                                          const RemovalOptions& options, const std::vector<uint32_t>* seeds) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
-  return Remover(front, tree, root, out, options).run();
+  return Remover(front, tree, root, out, options).run(seeds);
 }
 
 }  // namespace partet

@@ -67,7 +67,11 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
 // numbered in the front's vertex numbering: its vertices must be a prefix
 // of the front's (e.g. the template core, or empty); the missing front
 // vertices are appended (coordinates, and global ids when `out` has them).
+//
+// With `seeds`, the queue starts with those faces (the alive ones, in the
+// given order) instead of every alive face: a local pass after a change.
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root,
-                                          TetMesh& out, const RemovalOptions& options = {});
+                                          TetMesh& out, const RemovalOptions& options = {},
+                                          const std::vector<uint32_t>* seeds = nullptr);
 
 }  // namespace partet

@@ -227,4 +227,19 @@ int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::
   return closed;
 }
 
+void Front::remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
+  ++changes_;
+  const uint32_t a = tet[0], b = tet[1], c = tet[2], d = tet[3];
+  // Into the tet: (a, b, c) faces d; the others are the reverses of the
+  // outward faces (b, c, d), (a, d, c), (a, b, d).
+  const uint32_t sides[4][3] = {{a, b, c}, {b, d, c}, {a, c, d}, {a, d, b}};
+  uint32_t twins[4];
+  for (int s = 0; s < 4; ++s) {
+    twins[s] = find_face(sides[s][0], sides[s][1], sides[s][2]);
+    if (twins[s] == kNoIndex) added.push_back(add_face(sides[s][0], sides[s][1], sides[s][2]));
+  }
+  for (uint32_t twin : twins)
+    if (twin != kNoIndex) close_face(twin, shrunk);
+}
+
 }  // namespace partet

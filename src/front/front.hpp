@@ -104,6 +104,13 @@ class Front {
   // to `shrunk` (with repetitions). Returns the number of faces closed
   // besides f.
   int apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
+  // Undoes a tet: the positively oriented tet (a, b, c, d), made earlier,
+  // is taken out of the meshed region. Each of its faces, oriented into it,
+  // closes its reverse when that is alive (the unmeshed region on the other
+  // side joins), else is added (the other side is meshed, or outside the
+  // domain for a surface triangle). Appends the new faces' indices to
+  // `added` and the leaves that lost a face or a vertex to `shrunk`.
+  void remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
 
  private:
   uint32_t add_face(uint32_t a, uint32_t b, uint32_t c);

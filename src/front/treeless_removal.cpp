@@ -1,145 +1,327 @@
-// Tree-less face removals with new vertices: the rounds, the cavity fill
-// and apex candidates, and the bookkeeping of added vertices (see
-// steiner_removal.hpp).
-#include "front/steiner_removal.hpp"
+// Tree-less face removals: rounds over the front components, star fills,
+// growth by tet deletion and partial cones (see treeless_removal.hpp).
+#include "front/treeless_removal.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <utility>
 #include <vector>
 
+#include "core/distance.hpp"
 #include "core/error.hpp"
 #include "core/predicates.hpp"
+#include "front/kernel_point.hpp"
 #include "front/removal_checks.hpp"
+#include "front/tet_incidence.hpp"
 #include "octree/range_query.hpp"
 
 namespace partet {
 
 namespace {
 
-constexpr size_t kMaxCavityFaces = 64;
+double squared_distance(const double* x, const double* y) {
+  const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
+  return dx * dx + dy * dy + dz * dz;
+}
 
-class SteinerRemover {
+constexpr size_t kMaxCavityFaces = 256;  // largest component tried for a star point, or grown
+constexpr int kMaxGrowth = 8;
+
+class TreelessRemover {
  public:
-  SteinerRemover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
+  TreelessRemover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
       : front_(front), tree_(tree), root_(root), out_(out), options_(options) {}
 
-  RemovalCounts run();
+  TreelessCounts run();
 
  private:
   void tree_pass();
+  // Tree-supported removals starting from the given faces only.
+  void local_tree_pass(const std::vector<uint32_t>& seeds);
+  // Sum of the squared edge lengths of face f.
+  double face_size(uint32_t f) const;
   uint32_t add_vertex(const double* p);
   void drop_vertex();
-  // Gathers the near front over the bounding box of face f and point v;
-  // false when a leaf there is owned by another rank.
-  bool gather_around(uint32_t f, uint32_t v);
+  // Leaves over the box of the given points; false when one is owned by
+  // another rank.
+  bool own_leaves_around(const double* const* points, int n);
   bool valid_tet(uint32_t f, uint32_t v);
-  void make_tet(uint32_t f, uint32_t v);
-  bool try_cavity(const std::vector<uint32_t>& faces);
+  bool sees_all(const std::vector<uint32_t>& faces, const double* q) const;
+  // Cones the faces that see q to a new vertex at q where valid; returns
+  // the number of tets made (the vertex is dropped when 0).
+  size_t cone(const std::vector<uint32_t>& faces, const double* q);
+  bool fill(std::vector<uint32_t> faces);
+  // Classic advancing-front step on face f: an existing front vertex near
+  // the ideal apex (above the centroid at the height of the regular tet),
+  // else a new vertex there or lower; false when none is valid.
+  bool advance_face(uint32_t f);
+  // Deletes the tets behind the faces that do not see q; false when none.
+  bool reopen_blockers(const std::vector<uint32_t>& faces, const double* q);
   // Alive faces grouped by edge-connected component: components_ holds the
   // faces, component_first_ the start of each (plus one past the end).
   void find_components();
+  // The component (after find_components) holding face f.
+  std::vector<uint32_t> component_of(uint32_t f) const;
 
   Front& front_;
   LinearOctree& tree_;
   const RootCube& root_;
   TetMesh& out_;
   const RemovalOptions& options_;
-  RemovalCounts counts_;
+  TreelessCounts counts_;
   bool ids_ = false;
-  size_t budget_ = 0;
+  size_t vertex_budget_ = 0;
+  size_t deletion_budget_ = 0;
+  std::unique_ptr<TetIncidence> incidence_;
 
   std::vector<size_t> leaves_;
   NearFront near_;
   std::vector<uint32_t> added_, shrunk_;
   std::vector<uint32_t> components_;
   std::vector<size_t> component_first_;
+  std::vector<uint32_t> component_index_;  // per face slot (alive faces)
 };
 
-void SteinerRemover::tree_pass() {
+void TreelessRemover::tree_pass() {
   const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_);
-  counts_.tets += n.tets;
+  counts_.tree_tets += n.tets;
   counts_.checks += n.checks;
-  counts_.passes += n.passes;
   counts_.foreign_faces = n.foreign_faces;
 }
 
-uint32_t SteinerRemover::add_vertex(const double* p) {
+void TreelessRemover::local_tree_pass(const std::vector<uint32_t>& seeds) {
+  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_, &seeds);
+  counts_.tree_tets += n.tets;
+  counts_.checks += n.checks;
+}
+
+double TreelessRemover::face_size(uint32_t f) const {
+  const uint32_t* t = front_.face(f);
+  return squared_distance(front_.point(t[0]), front_.point(t[1])) +
+         squared_distance(front_.point(t[1]), front_.point(t[2])) +
+         squared_distance(front_.point(t[2]), front_.point(t[0]));
+}
+
+uint32_t TreelessRemover::add_vertex(const double* p) {
   const uint32_t v = front_.add_vertex(p, kSteinerVertexId | front_.num_vertices());
   out_.xyz.insert(out_.xyz.end(), p, p + 3);
   if (ids_) out_.global_ids.push_back(front_.global_ids()[v]);
   return v;
 }
 
-void SteinerRemover::drop_vertex() {
+void TreelessRemover::drop_vertex() {
   front_.remove_last_vertex();
   out_.xyz.resize(out_.xyz.size() - 3);
   if (ids_) out_.global_ids.pop_back();
 }
 
-bool SteinerRemover::gather_around(uint32_t f, uint32_t v) {
-  const uint32_t* t = front_.face(f);
-  const double* p[4] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), front_.point(v)};
+bool TreelessRemover::own_leaves_around(const double* const* points, int n) {
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) {
-    lo[k] = std::min({p[0][k], p[1][k], p[2][k], p[3][k]});
-    hi[k] = std::max({p[0][k], p[1][k], p[2][k], p[3][k]});
+    lo[k] = hi[k] = points[0][k];
+    for (int i = 1; i < n; ++i) {
+      lo[k] = std::min(lo[k], points[i][k]);
+      hi[k] = std::max(hi[k], points[i][k]);
+    }
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
   front_.query().leaves_in_range(glo, ghi, leaves_);
   for (size_t leaf : leaves_)
     if (tree_.owner[leaf] != options_.rank) return false;
-  gather_near_front(front_, leaves_, near_);
   return true;
 }
 
-bool SteinerRemover::valid_tet(uint32_t f, uint32_t v) {
-  if (!gather_around(f, v)) return false;
+bool TreelessRemover::valid_tet(uint32_t f, uint32_t v) {
+  const uint32_t* t = front_.face(f);
+  const double* p[4] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), front_.point(v)};
+  if (!own_leaves_around(p, 4)) return false;
+  gather_near_front(front_, leaves_, near_);
   ++counts_.checks;
   return check_removal(front_, f, v, near_) == RemovalVerdict::kValid;
 }
 
-void SteinerRemover::make_tet(uint32_t f, uint32_t v) {
-  make_removal_tet(front_, tree_, out_, f, v, added_, shrunk_);
-  ++counts_.tets;
+bool TreelessRemover::sees_all(const std::vector<uint32_t>& faces, const double* q) const {
+  for (uint32_t f : faces) {
+    const uint32_t* t = front_.face(f);
+    if (orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) <= 0) return false;
+  }
+  return true;
 }
 
-bool SteinerRemover::try_cavity(const std::vector<uint32_t>& faces) {
-  double candidates[2][3] = {{0, 0, 0}, {0, 0, 0}};
-  std::vector<uint32_t> vertices;
-  for (uint32_t f : faces)
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t v = front_.face(f)[i];
-      vertices.push_back(v);
-      for (int k = 0; k < 3; ++k) candidates[0][k] += front_.point(v)[k] / (3.0 * static_cast<double>(faces.size()));
+size_t TreelessRemover::cone(const std::vector<uint32_t>& faces, const double* q) {
+  if (front_.num_vertices() >= vertex_budget_) return 0;
+  const uint32_t v = add_vertex(q);
+  size_t made = 0;
+  for (uint32_t f : faces) {
+    if (!front_.alive(f)) continue;
+    const uint32_t* t = front_.face(f);
+    if (orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) <= 0 || !valid_tet(f, v)) continue;
+    make_removal_tet(front_, tree_, out_, f, v, added_, shrunk_);
+    ++made;
+  }
+  if (made == 0) {
+    drop_vertex();
+    return 0;
+  }
+  ++counts_.vertices_added;
+  counts_.new_vertex_tets += made;
+  return made;
+}
+
+bool TreelessRemover::reopen_blockers(const std::vector<uint32_t>& faces, const double* q) {
+  if (!incidence_) incidence_ = std::make_unique<TetIncidence>(out_);
+  incidence_->index_new(out_);
+  std::vector<uint32_t> doomed;
+  for (uint32_t f : faces) {
+    const uint32_t* t = front_.face(f);
+    if (orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) > 0) continue;
+    const uint32_t tet = incidence_->tet_behind(out_, t[0], t[1], t[2]);
+    if (tet == kNoTet) continue;
+    const uint32_t* v = &out_.tets[4 * size_t{tet}];
+    const double* p[4] = {out_.point(v[0]), out_.point(v[1]), out_.point(v[2]), out_.point(v[3])};
+    if (own_leaves_around(p, 4)) doomed.push_back(tet);
+  }
+  std::sort(doomed.begin(), doomed.end());
+  doomed.erase(std::unique(doomed.begin(), doomed.end()), doomed.end());
+  size_t deleted = 0;
+  for (uint32_t tet : doomed) {
+    if (counts_.tets_deleted >= deletion_budget_) break;
+    added_.clear();
+    shrunk_.clear();
+    front_.remove_tet(&out_.tets[4 * size_t{tet}], added_, shrunk_);
+    incidence_->kill(tet);
+    ++counts_.tets_deleted;
+    ++deleted;
+  }
+  return deleted > 0;
+}
+
+bool TreelessRemover::fill(std::vector<uint32_t> faces) {
+  KernelPoint kernel;
+  for (int growth = 0;; ++growth) {
+    if (faces.size() > kMaxCavityFaces) return false;
+    kernel = deepest_kernel_point(front_, faces);
+    // Candidates: the kernel's deepest point, the mean of the face
+    // centroids, the mean of the vertices.
+    double candidates[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    std::vector<uint32_t> vertices;
+    for (uint32_t f : faces)
+      for (int i = 0; i < 3; ++i) {
+        const uint32_t v = front_.face(f)[i];
+        vertices.push_back(v);
+        for (int k = 0; k < 3; ++k)
+          candidates[1][k] += front_.point(v)[k] / (3.0 * static_cast<double>(faces.size()));
+      }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    for (uint32_t v : vertices)
+      for (int k = 0; k < 3; ++k) candidates[2][k] += front_.point(v)[k] / static_cast<double>(vertices.size());
+    std::copy_n(kernel.point, 3, candidates[0]);
+    for (int c = kernel.found ? 0 : 1; c < 3; ++c)
+      if (sees_all(faces, candidates[c]) && cone(faces, candidates[c]) > 0) {
+        ++counts_.star_fills;
+        return true;
+      }
+    if (!kernel.found || growth == kMaxGrowth || !reopen_blockers(faces, kernel.point)) break;
+    // The grown component: the one holding an alive face of the old one or
+    // a face the deletions added.
+    uint32_t seed = kNoIndex;
+    for (uint32_t f : faces)
+      if (seed == kNoIndex && front_.alive(f)) seed = f;
+    for (uint32_t f : added_)
+      if (seed == kNoIndex && front_.alive(f)) seed = f;
+    if (seed == kNoIndex) return true;  // the deletions closed it
+    find_components();
+    faces = component_of(seed);
+  }
+  if (!kernel.found) return false;
+  const bool made = cone(faces, kernel.point) > 0;
+  counts_.partial_cones += made;
+  return made;
+}
+
+bool TreelessRemover::advance_face(uint32_t f) {
+  if (front_.num_vertices() >= vertex_budget_) return false;
+  const uint32_t* t = front_.face(f);
+  const uint32_t a = t[0], b = t[1], c = t[2];
+  const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
+  double g[3], e1[3], e2[3], n[3];
+  for (int k = 0; k < 3; ++k) {
+    g[k] = (pa[k] + pb[k] + pc[k]) / 3;
+    e1[k] = pb[k] - pa[k];
+    e2[k] = pc[k] - pa[k];
+  }
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double edge = (std::sqrt(squared_distance(pa, pb)) + std::sqrt(squared_distance(pb, pc)) +
+                       std::sqrt(squared_distance(pc, pa))) / 3;
+  if (!(length > 0) || !(edge > 0)) return false;
+  const double regular_height = std::sqrt(2.0 / 3.0) * edge;
+  double top[3];
+  for (int k = 0; k < 3; ++k) top[k] = g[k] + n[k] / length * regular_height;
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min({pa[k], pb[k], pc[k], top[k]}) - 0.5 * edge;
+    hi[k] = std::max({pa[k], pb[k], pc[k], top[k]}) + 0.5 * edge;
+  }
+  const double box[2][3] = {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
+  const double* corners[2] = {box[0], box[1]};
+  if (!own_leaves_around(corners, 2)) return false;
+  gather_near_front(front_, leaves_, near_);
+  // Existing front vertices near the ideal apex first, nearest first.
+  std::vector<std::pair<double, uint32_t>> near_apex;
+  for (uint32_t v : near_.vertices) {
+    if (v == a || v == b || v == c) continue;
+    const double d2 = squared_distance(front_.point(v), top);
+    if (d2 < 0.5 * regular_height * regular_height && orient3d(pa, pb, pc, front_.point(v)) > 0)
+      near_apex.emplace_back(d2, v);
+  }
+  std::sort(near_apex.begin(), near_apex.end());
+  for (const auto& [d2, v] : near_apex) {
+    ++counts_.checks;
+    if (check_removal(front_, f, v, near_) == RemovalVerdict::kValid) {
+      make_removal_tet(front_, tree_, out_, f, v, added_, shrunk_);
+      ++counts_.advances;
+      return true;
     }
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  for (uint32_t v : vertices)
-    for (int k = 0; k < 3; ++k) candidates[1][k] += front_.point(v)[k] / static_cast<double>(vertices.size());
-  for (const double* q : candidates) {
-    bool sees_all = true;
-    for (uint32_t f : faces) {
-      const uint32_t* t = front_.face(f);
-      sees_all = sees_all && orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) > 0;
+  }
+  for (double factor : {1.0, 0.7, 0.45, 0.25}) {
+    const double height = factor * regular_height;
+    double p[3];
+    for (int k = 0; k < 3; ++k) p[k] = g[k] + n[k] / length * height;
+    if (orient3d(pa, pb, pc, p) <= 0) continue;
+    // Spacing: no front vertex within 0.45 height, no other front face
+    // within 0.3 height (the tets they would make later would be flat).
+    bool spaced = true;
+    for (uint32_t v : near_.vertices)
+      spaced = spaced && (v == a || v == b || v == c || squared_distance(front_.point(v), p) >= 0.2 * height * height);
+    for (uint32_t h : near_.faces) {
+      if (!spaced) break;
+      const uint32_t* u = front_.face(h);
+      spaced = h == f || squared_point_triangle_distance(p, front_.point(u[0]), front_.point(u[1]),
+                                                         front_.point(u[2])) >= 0.09 * height * height;
     }
-    if (!sees_all) continue;
-    const uint32_t v = add_vertex(q);
-    bool made = false;
-    for (uint32_t f : faces) {
-      if (!front_.alive(f) || !valid_tet(f, v)) continue;
-      make_tet(f, v);
-      made = true;
+    if (!spaced) continue;
+    const uint32_t v = add_vertex(p);
+    ++counts_.checks;
+    if (check_removal(front_, f, v, near_) == RemovalVerdict::kValid) {
+      make_removal_tet(front_, tree_, out_, f, v, added_, shrunk_);
+      ++counts_.vertices_added;
+      ++counts_.new_vertex_tets;
+      ++counts_.advances;
+      return true;
     }
-    if (made) return true;
     drop_vertex();
   }
   return false;
 }
 
-void SteinerRemover::find_components() {
+void TreelessRemover::find_components() {
   std::vector<std::pair<uint64_t, uint32_t>> edge_face;
   std::vector<uint32_t> parent(front_.num_face_slots());
   std::iota(parent.begin(), parent.end(), 0u);
@@ -168,45 +350,77 @@ void SteinerRemover::find_components() {
   std::sort(by_root.begin(), by_root.end());
   components_.clear();
   component_first_.clear();
+  component_index_.assign(front_.num_face_slots(), kNoIndex);
   for (size_t i = 0; i < by_root.size(); ++i) {
     if (i == 0 || by_root[i].first != by_root[i - 1].first) component_first_.push_back(i);
     components_.push_back(by_root[i].second);
+    component_index_[by_root[i].second] = static_cast<uint32_t>(component_first_.size() - 1);
   }
   component_first_.push_back(components_.size());
 }
 
-RemovalCounts SteinerRemover::run() {
+std::vector<uint32_t> TreelessRemover::component_of(uint32_t f) const {
+  const uint32_t c = component_index_[f];
+  return std::vector<uint32_t>(components_.begin() + static_cast<ptrdiff_t>(component_first_[c]),
+                               components_.begin() + static_cast<ptrdiff_t>(component_first_[c + 1]));
+}
+
+TreelessCounts TreelessRemover::run() {
   tree_pass();  // also appends the front vertices `out` lacks
   ids_ = out_.global_ids.size() == out_.num_vertices();
-  budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
+  vertex_budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
+  deletion_budget_ = 16 * front_.num_alive_faces() + 256;
 
-  std::vector<uint32_t> cavity;
-  bool made = front_.num_alive_faces() > 0;
-  while (made && front_.num_alive_faces() > 0 && front_.num_vertices() < budget_) {
-    made = false;
+  std::vector<std::vector<uint32_t>> cavities;
+  std::vector<uint32_t> stuck, seeds;
+  bool changed = front_.num_alive_faces() > 0;
+  while (changed && front_.num_alive_faces() > 0) {
+    ++counts_.rounds;
+    changed = false;
+    const size_t tets_before = out_.num_tets(), deleted_before = counts_.tets_deleted;
     find_components();
+    cavities.clear();
+    stuck.clear();
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {
-      cavity.assign(components_.begin() + static_cast<ptrdiff_t>(component_first_[i]),
-                    components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]));
-      if (cavity.size() > kMaxCavityFaces || front_.num_vertices() >= budget_) continue;
+      const auto first = components_.begin() + static_cast<ptrdiff_t>(component_first_[i]);
+      const auto last = components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]);
+      if (last - first <= static_cast<ptrdiff_t>(kMaxCavityFaces))
+        cavities.emplace_back(first, last);
+      else
+        stuck.insert(stuck.end(), first, last);
+    }
+    for (const std::vector<uint32_t>& cavity : cavities) {
       bool all_alive = true;
       for (uint32_t f : cavity) all_alive = all_alive && front_.alive(f);
-      if (all_alive && try_cavity(cavity)) {
-        made = true;
-        tree_pass();
-      }
+      if (all_alive) fill(cavity);
     }
+    // Components too large for one star point: advance them face by face, smallest face first, each advance followed by
+    // tree-supported removals of the faces near it.
+    std::vector<std::pair<double, uint32_t>> order;
+    for (uint32_t f : stuck)
+      if (front_.alive(f)) order.emplace_back(face_size(f), f);
+    std::sort(order.begin(), order.end());
+    for (const auto& [size, f] : order) {
+      if (!front_.alive(f) || !advance_face(f)) continue;
+      seeds.assign(added_.begin(), added_.end());
+      seeds.insert(seeds.end(), near_.faces.begin(), near_.faces.end());
+      local_tree_pass(seeds);
+    }
+    tree_pass();
+    changed = out_.num_tets() != tets_before || counts_.tets_deleted != deleted_before;
+    if (front_.num_vertices() >= vertex_budget_ || counts_.tets_deleted >= deletion_budget_) break;
   }
+  if (incidence_) incidence_->drop_dead_tets(out_);
   counts_.faces_left = front_.num_alive_faces();
   return counts_;
 }
 
 }  // namespace
 
-RemovalCounts remove_faces_with_new_vertices(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                             const RemovalOptions& options) {
+TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
+                                     const RemovalOptions& options) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
-  return SteinerRemover(front, tree, root, out, options).run();
+  return TreelessRemover(front, tree, root, out, options).run();
 }
 
 }  // namespace partet

@@ -1,33 +1,47 @@
-// Tree-less face removals with new vertices (paper §2.4, pipeline step 10,
-// first mechanism): the faces that tree-supported removals leave are
-// removed by tets whose apex is a new vertex. Surface triangles and surface
-// vertices are never changed; no tet is deleted.
+// Tree-less face removals (paper §2.4, pipeline step 10): what the
+// tree-supported removals leave is a set of small closed cavities (front
+// components). They are closed by removals that may add a vertex inside a
+// cavity and delete tets made earlier to reopen a stuck region. Surface
+// triangles and surface vertices are never changed: a surface triangle has
+// no tet behind it, so it is never reopened, and new vertices are strictly
+// inside the unmeshed region.
 //
-// Cavity fill, in rounds until the front is empty, a round makes no tet,
-// or the vertex budget (4 × the alive faces at the start + 64 new
-// vertices) is spent: the alive faces are split into components (faces
-// sharing an edge); for each component of at most 64 faces, in order of its
-// lowest face index, the star points tried are the mean of its face
-// centroids and the mean of its vertices. A star point q must see every
-// face of the component (orient3d(a, b, c, q) > 0); then q is added and the
-// faces are coned to it one by one, each tet made only when check_removal
-// (removal_checks.hpp) says valid against the front gathered from the
-// leaves over the tet's bounding box (not tried when one of those leaves is
-// owned by another rank); q is removed again when no tet was made. After
-// each fill remove_faces_tree_supported runs again, so that the
-// neighbouring faces use the new vertex; it also runs once first.
+// Rounds, until the front is empty, a round changes nothing, or a budget
+// is spent (new vertices: 4 x the alive faces at the start + 64; deleted
+// tets: 16 x those faces + 256). A round splits the alive faces into
+// components (faces sharing an edge) and, for each component of at most
+// kMaxCavityFaces faces in order of its lowest face index:
+//  1. star fill: q = the deepest point of the component's kernel
+//     (kernel_point.hpp; the mean of the face centroids and the mean of the
+//     vertices are tried as well). When every face sees q exactly
+//     (orient3d > 0), q is added and every face is coned to it, each tet
+//     only when check_removal (removal_checks.hpp) says valid against the
+//     front gathered over the tet's bounding box;
+//  2. growth: otherwise the faces that do not see q and have a tet behind
+//     them (they are not surface triangles) are reopened: the tet behind
+//     each is deleted (Front::remove_tet), the component grows into it, and
+//     step 1 is tried again on the grown component, up to kMaxGrowth times;
+//  3. partial cone: when the component still has no star point, q is added
+//     and the faces that see it are coned to it where valid (q is dropped
+//     again when none is): the cavity is split into smaller ones.
+// After each round remove_faces_tree_supported runs over the whole front,
+// so that neighbouring faces use the new vertices (it also runs first).
 // Points are computed in doubles; every decision on them is exact.
+// Deleted tets are removed from `out` at the end (their vertices stay, and
+// may end unused: the caller compacts).
 //
 // Global ids of new vertices: kSteinerVertexId | (front vertex index),
 // with bits 63 and 62 set. Lattice keys (core vertices) are below 2^63 and
 // surface vertices are kSurfaceVertexId | s with s < 2^32 (bit 62 clear),
 // so the three id spaces are disjoint.
 //
-// Termination: the budget bounds the new vertices, each fill adds one, and
-// tree-supported removal terminates (face_removal.hpp). Deterministic:
-// fixed orders, ties by index.
+// Termination: each round either changes the mesh, spending budget (a new
+// vertex or a deletion) or making tets by tree-supported removal, which
+// terminates (face_removal.hpp); a round that changes nothing ends the
+// call. Deterministic: fixed orders, ties by index.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "core/tet_mesh.hpp"
@@ -40,11 +54,24 @@ namespace partet {
 
 constexpr uint64_t kSteinerVertexId = kSurfaceVertexId | (uint64_t{1} << 62);
 
-// As remove_faces_tree_supported (same contract on `front`, `tree`, `root`
-// and `out`): new vertices are appended to the front and to `out` (with
-// global ids when `out` has them). The counts include the tets and checks
-// of the tree-supported runs; foreign_faces is that of the last of them.
-RemovalCounts remove_faces_with_new_vertices(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                             const RemovalOptions& options = {});
+struct TreelessCounts {
+  size_t tree_tets = 0;        // made by the tree-supported runs inside
+  size_t new_vertex_tets = 0;  // made on new vertices
+  size_t vertices_added = 0;
+  size_t tets_deleted = 0;
+  size_t star_fills = 0;       // components closed by one star point
+  size_t partial_cones = 0;
+  size_t advances = 0;         // tets on a new vertex above one face
+  size_t rounds = 0;
+  size_t checks = 0;
+  size_t faces_left = 0;
+  size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
+};
+
+// Same contract as remove_faces_tree_supported on `front`, `tree`, `root`
+// and `out`: new vertices are appended to the front and to `out` (with
+// global ids when `out` has them).
+TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
+                                     const RemovalOptions& options = {});
 
 }  // namespace partet

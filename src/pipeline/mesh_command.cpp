@@ -8,25 +8,32 @@
 #include "pipeline/mesh_command.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <memory>
 
 #include "check/quality.hpp"
+#include "core/compact_mesh.hpp"
 #include "core/error.hpp"
 #include "core/point_text.hpp"
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/initial_front.hpp"
-#include "front/steiner_removal.hpp"
+#include "front/treeless_removal.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"
 #include "octree/build.hpp"
 #include "octree/classify.hpp"
+#include "octree/distributed_build.hpp"
+#include "octree/distributed_classify.hpp"
+#include "octree/ghost_layer.hpp"
 #include "octree/sizing.hpp"
+#include "optimize/optimize.hpp"
 #include "parallel/collective_step.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
+#include "templates/gather_core.hpp"
 #include "templates/manifold_core.hpp"
 #include "templates/template_mesh.hpp"
 
@@ -78,6 +85,14 @@ struct MeshState {
   VertexSizing sizing;
   LinearOctree tree;
   TemplateCore core;
+  // On P > 1 ranks the tree is built, classified and templated distributed:
+  // this rank's leaves, its local view (own leaves and ghost layers) and its
+  // part of the core; `tree` and `core` are then gathered on rank 0 when
+  // later steps need them (`whole_on_root`).
+  DistributedOctree own;
+  LinearOctree view;
+  TemplateCore part;
+  bool whole_on_root = false;
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
 };
@@ -163,10 +178,74 @@ ojson build_tree(MeshState& s, const MeshOptions& o) {
   return c;
 }
 
-ojson classify(MeshState& s, const MeshOptions& o) {
+// No dihedral angle measured (above any angle).
+constexpr double kNoAngle = 1e300;
+
+// Rank 0's diagnosed surface and its bounding box, on every rank.
+void share_surface(const Comm& comm, MeshState& s) {
+  std::string bytes;
+  if (comm.rank() == 0) {
+    const uint64_t sizes[2] = {s.surface.xyz.size(), s.surface.tris.size()};
+    bytes.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
+    bytes.append(reinterpret_cast<const char*>(s.summary.bbox), sizeof s.summary.bbox);
+    bytes.append(reinterpret_cast<const char*>(s.surface.xyz.data()), sizes[0] * sizeof(double));
+    bytes.append(reinterpret_cast<const char*>(s.surface.tris.data()), sizes[1] * sizeof(uint32_t));
+  }
+  comm.broadcast(bytes, 0);
+  if (comm.rank() == 0) return;
+  uint64_t sizes[2];
+  PARTET_ASSERT(bytes.size() >= sizeof sizes + sizeof s.summary.bbox, "truncated surface broadcast");
+  std::memcpy(sizes, bytes.data(), sizeof sizes);
+  PARTET_ASSERT(bytes.size() == sizeof sizes + sizeof s.summary.bbox + sizes[0] * sizeof(double) +
+                                    sizes[1] * sizeof(uint32_t),
+                "truncated surface broadcast");
+  const char* at = bytes.data() + sizeof sizes;
+  std::memcpy(s.summary.bbox, at, sizeof s.summary.bbox);
+  at += sizeof s.summary.bbox;
+  s.surface.xyz.resize(sizes[0]);
+  s.surface.tris.resize(sizes[1]);
+  std::memcpy(s.surface.xyz.data(), at, sizes[0] * sizeof(double));
+  std::memcpy(s.surface.tris.data(), at + sizes[0] * sizeof(double), sizes[1] * sizeof(uint32_t));
+}
+
+// build_tree on P > 1 ranks: every rank sizes the whole surface and passes
+// its slice of the vertices to the distributed build.
+ojson build_tree_distributed(MeshState& s, const MeshOptions& o, const Comm& comm) {
+  share_surface(comm, s);
+  s.root = make_root_cube(s.summary.bbox);
+  SizingOptions sizing;
+  sizing.max_size = o.max_size;
+  sizing.size_factor = o.size_factor;
+  sizing.max_level = o.max_level;
+  s.sizing = size_vertices(s.surface, s.root, sizing);
+  const size_t n = s.sizing.level.size(), p = static_cast<size_t>(comm.size());
+  const size_t r = static_cast<size_t>(comm.rank()), begin = n * r / p, end = n * (r + 1) / p;
+  const std::vector<uint32_t> grid(s.sizing.grid.begin() + static_cast<std::ptrdiff_t>(3 * begin),
+                                   s.sizing.grid.begin() + static_cast<std::ptrdiff_t>(3 * end));
+  const std::vector<uint8_t> level(s.sizing.level.begin() + static_cast<std::ptrdiff_t>(begin),
+                                   s.sizing.level.begin() + static_cast<std::ptrdiff_t>(end));
+  TreeBuildCounts n_build;
+  s.own = build_distributed_octree(comm, grid, level, &n_build);
+  refine_distributed_for_triangles(s.own, comm.rank(), s.surface, s.root, s.sizing.level);
+  balance_distributed_octree(comm, s.own);
+  int64_t deepest = 0;
+  for (uint8_t l : s.own.leaves.level) deepest = std::max<int64_t>(deepest, l);
+  const int64_t leaves = static_cast<int64_t>(s.own.leaves.size());
+  ojson c;
+  c["leaves"] = comm.sum(leaves);
+  c["leaves per rank"] = comm.all_gather(leaves);
+  c["deepest level"] = comm.max(deepest);
+  c["root edge"] = s.root.edge();
+  c["rank-set halvings"] = n_build.depths;
+  c["coarse passes"] = n_build.coarse_passes;
+  return c;
+}
+
+ojson classify(MeshState& s, const MeshOptions& o, const Comm& comm) {
   ClassifyOptions options;
   options.too_close = o.too_close;
-  ClassCounts n = classify_leaves(s.tree, s.surface, s.root, s.sizing.size, options);
+  ClassCounts n = comm.size() > 1 ? classify_distributed(comm, s.own, s.surface, s.root, s.sizing.size, options)
+                                  : classify_leaves(s.tree, s.surface, s.root, s.sizing.size, options);
   ojson c;
   c["boundary"] = n.boundary;
   c["too close"] = n.too_close;
@@ -184,9 +263,13 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   int code = kExitOk;
   std::string message;
   MeshState s;
-  // This version meshes on rank 0; the other ranks take part in every step
-  // (agreement, timings) and write empty pieces.
+  // On P > 1 ranks the octree and the templates are distributed; the later
+  // steps run on rank 0 (the others take part in every step for agreement
+  // and timings, and write empty pieces).
   const bool root_rank = comm.rank() == 0;
+  const bool distributed = comm.size() > 1;
+  // Whether rank 0 needs the whole tree and core after templating.
+  const bool gather = options.stop_after != StopAfter::kTemplates || !options.front_out.empty();
   try {
     report.run_step("check options", [&] {
       check_options(options);
@@ -217,12 +300,20 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       if (!options.report.empty()) collective_step(comm, [&] { report.write(options.report); });
       return kExitOk;
     }
-    report.run_step("build octree", [&] { return root_rank ? build_tree(s, options) : ojson::object(); });
-    report.run_step("classify leaves", [&] { return root_rank ? classify(s, options) : ojson::object(); });
+    report.run_step("build octree", [&] {
+      if (distributed) return build_tree_distributed(s, options, comm);
+      return root_rank ? build_tree(s, options) : ojson::object();
+    });
+    report.run_step("classify leaves", [&] {
+      return distributed || root_rank ? classify(s, options, comm) : ojson::object();
+    });
     report.run_step("manifold core", [&] {
-      if (!root_rank) return ojson::object();
-      ManifoldCoreCounts n = make_core_manifold(s.tree);
+      if (!distributed && !root_rank) return ojson::object();
+      GhostCounts ghosts;
+      if (distributed) s.view = ghost_view(comm, s.own, &ghosts);
+      ManifoldCoreCounts n = distributed ? make_core_manifold(comm, s.view) : make_core_manifold(s.tree);
       ojson c;
+      if (distributed) c["ghost leaves"] = comm.sum(static_cast<int64_t>(ghosts.layer1 + ghosts.layer2));
       c["demoted"] = n.demoted;
       c["repairs"] = n.repaired;
       c["rounds"] = n.rounds;
@@ -230,8 +321,23 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       return c;
     });
     report.run_step("template interior", [&] {
+      if (distributed) {
+        s.part = template_interior(s.view, s.root, comm.rank());
+        const int64_t tets = static_cast<int64_t>(s.part.mesh.num_tets());
+        ojson c;
+        c["tets"] = comm.sum(tets);
+        c["tets per rank"] = comm.all_gather(tets);
+        c["leaves"] = comm.sum(static_cast<int64_t>(s.part.leaves_templated));
+        if (gather) {
+          gather_tree_and_core(comm, s.view, s.part, s.tree, s.core);
+          s.whole_on_root = true;
+          c["vertices"] = s.core.mesh.num_vertices();
+        }
+        return c;
+      }
       if (!root_rank) return ojson::object();
       s.core = template_interior(s.tree, s.root);
+      s.whole_on_root = true;
       ojson c;
       c["tets"] = s.core.mesh.num_tets();
       c["vertices"] = s.core.mesh.num_vertices();
@@ -239,15 +345,23 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       return c;
     });
     report.run_step("core quality", [&] {
-      if (!root_rank || s.core.mesh.num_tets() == 0) return ojson::object();
-      QualityStats q = measure_quality(s.core.mesh);
+      // Each rank measures its part (the whole core on one rank).
+      const TetMesh& core = distributed ? s.part.mesh : s.core.mesh;
+      double extremes[2] = {kNoAngle, kNoAngle};  // smallest dihedral, minus the largest
+      if (core.num_tets() > 0) {
+        const QualityStats q = measure_quality(core);
+        extremes[0] = q.min_dihedral_deg;
+        extremes[1] = -q.max_dihedral_deg;
+      }
+      comm.min(extremes, 2);
+      if (extremes[0] == kNoAngle) return ojson::object();
       ojson c;
-      c["min dihedral"] = q.min_dihedral_deg;
-      c["max dihedral"] = q.max_dihedral_deg;
+      c["min dihedral"] = extremes[0];
+      c["max dihedral"] = -extremes[1];
       return c;
     });
     report.run_step("initial front", [&] {
-      if (!root_rank) return ojson::object();
+      if (!root_rank || !s.whole_on_root) return ojson::object();
       s.initial_front = make_initial_front(s.tree, s.root, s.core, s.surface);
       const InitialFront& front = s.initial_front;
       if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
@@ -259,9 +373,10 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     });
     if (options.stop_after == StopAfter::kTemplates) {
       report.run_step("write core", [&] {
-        write_distributed_mesh(s.core.mesh, options.output, {options.ascii}, comm);
+        const TetMesh& core = distributed ? s.part.mesh : s.core.mesh;
+        write_distributed_mesh(core, options.output, {options.ascii}, comm);
         ojson c;
-        c["tets"] = s.core.mesh.num_tets();
+        c["tets"] = comm.sum(static_cast<int64_t>(core.num_tets()));
         c["file"] = options.output;
         return c;
       });
@@ -279,14 +394,19 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         c["passes"] = n.passes;
         return c;
       });
-      if (comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
-        report.run_step("face removals (new vertices)", [&] {
+      if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
+        report.run_step("face removals (tree-less)", [&] {
           if (!root_rank) return ojson::object();
-          const size_t vertices_before = front->num_vertices();
-          RemovalCounts n = remove_faces_with_new_vertices(*front, s.tree, s.root, s.mesh);
+          TreelessCounts n = remove_faces_treeless(*front, s.tree, s.root, s.mesh);
           ojson c;
-          c["tets"] = n.tets;
-          c["new vertices"] = front->num_vertices() - vertices_before;
+          c["tets (tree-supported)"] = n.tree_tets;
+          c["tets (new vertices)"] = n.new_vertex_tets;
+          c["vertices added"] = n.vertices_added;
+          c["tets deleted"] = n.tets_deleted;
+          c["star fills"] = n.star_fills;
+          c["partial cones"] = n.partial_cones;
+          c["advances"] = n.advances;
+          c["rounds"] = n.rounds;
           c["faces left"] = n.faces_left;
           return c;
         });
@@ -309,8 +429,37 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
                                                                     : "; nothing was written (--keep-partial writes "
                                                                       "the tets made and the front left)"));
       }
+      if (root_rank) {
+        s.mesh.tris = boundary_triangles(s);
+        drop_unused_vertices(s.mesh);
+      }
+      if (options.optimize_passes > 0) {
+        report.run_step("optimize", [&] {
+          if (!root_rank) return ojson::object();
+          OptimizeOptions o;
+          o.passes = options.optimize_passes;
+          o.quality_target_deg = options.quality_target;
+          OptimizeStats n = optimize_mesh(s.mesh, o);
+          ojson c;
+          for (const auto& [when, q] : {std::pair{"before", n.before}, std::pair{"after", n.after}}) {
+            const double tets = static_cast<double>(std::max<size_t>(q.tets, 1));
+            c[std::string("min dihedral ") + when] = q.min_dihedral_deg;
+            c[std::string("max dihedral ") + when] = q.max_dihedral_deg;
+            c[std::string("% under 10 deg ") + when] = 100.0 * static_cast<double>(q.dihedral_under_10) / tets;
+            c[std::string("mean radius ratio ") + when] = q.radius_ratio_mean;
+          }
+          c["2-3 flips"] = n.flips_23;
+          c["3-2 flips"] = n.flips_32;
+          c["4-4 flips"] = n.flips_44;
+          c["edge removals"] = n.edge_removals;
+          c["vertices inserted"] = n.vertices_inserted;
+          c["vertices moved"] = n.vertices_moved;
+          c["passes"] = n.passes;
+          c["tets"] = s.mesh.num_tets();
+          return c;
+        });
+      }
       report.run_step("write mesh", [&] {
-        if (root_rank) s.mesh.tris = boundary_triangles(s);
         write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
         ojson c;
         c["tets"] = s.mesh.num_tets();

@@ -20,6 +20,9 @@ struct MeshOptions {
   double size_factor = 1;                                     // --size-factor F
   int max_level = 20;                                         // --max-level L
   double too_close = 0.8;                                     // --too-close T
+  int optimize_passes = 3;     // --optimize N: quality optimization passes (0, or --no-optimize: none)
+  double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone
+  bool treeless = true;       // --no-treeless: stop after the tree-supported removals
   bool keep_partial = false;  // --keep-partial: on exit 3, write the tets made and the front left
   bool ascii = false;     // --ascii: text Gmsh output
   bool quiet = false;     // --quiet: errors only

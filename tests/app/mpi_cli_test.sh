@@ -19,7 +19,7 @@ log=$(run "$data/good/cube.off" -o "$out/c.pvtu"); code=$?
 log=$("$partet" check "$out/c.pvtu" --surface "$data/good/cube.off" 2>&1); code=$?
 [[ $code -eq 0 ]] || { echo "the cube mesh is not valid"; echo "$log"; exit 1; }
 
-log=$(run "$data/good/ellipsoid.off" -o "$out/i.vtu"); code=$?
+log=$(run "$data/good/ellipsoid.off" -o "$out/i.vtu" --no-treeless); code=$?
 [[ $code -eq 3 ]] || { echo "ellipsoid.off: exit $code, expected 3"; echo "$log"; exit 1; }
 grep -q "front faces remain, near" <<<"$log" || { echo "exit 3 does not say where"; echo "$log"; exit 1; }
 
@@ -28,6 +28,32 @@ log=$(run "$data/good/sphere966.off" -o "$out/core.pvtu" --stop-after templates)
 [[ -e "$out/core_$((np - 1)).vtu" ]] || { echo "missing piece of rank $((np - 1))"; exit 1; }
 log=$("$partet" check "$out/core.pvtu" 2>&1); code=$?
 [[ $code -eq 0 ]] || { echo "the core pieces are not a valid mesh"; echo "$log"; exit 1; }
+
+# The ranks' core pieces together are the one-rank core: the same tets
+# (compared as sets of vertex coordinates, from a one-file .mesh the pieces
+# are merged into) and the same check report (counts, volume, quality).
+tets_by_coordinates() {  # Medit .mesh -> one sorted line per tet
+  awk '/^Vertices/ {getline n; for (i = 1; i <= n; i++) {getline; p[i] = $1 " " $2 " " $3}}
+       /^Tetrahedra/ {getline n; for (i = 1; i <= n; i++) {getline; for (k = 1; k <= 4; k++) v[k] = p[$k];
+         for (k = 2; k <= 4; k++) for (j = k; j > 1 && v[j] < v[j - 1]; j--) {t = v[j]; v[j] = v[j - 1]; v[j - 1] = t}
+         print v[1] "|" v[2] "|" v[3] "|" v[4]}}' "$1" | sort
+}
+for factor in 1 0.5; do
+  "$partet" "$data/good/sphere966.off" -o "$out/one.mesh" --stop-after templates --size-factor "$factor" -q ||
+    { echo "one-rank core failed"; exit 1; }
+  log=$(run "$data/good/sphere966.off" -o "$out/all.mesh" --stop-after templates --size-factor "$factor"); code=$?
+  [[ $code -eq 0 ]] || { echo "merged core: exit $code"; echo "$log"; exit 1; }
+  tets_by_coordinates "$out/one.mesh" >"$out/one.tets"
+  [[ $(wc -l <"$out/one.tets") -gt 1000 ]] || { echo "x$factor: the one-rank core is too small to compare"; exit 1; }
+  cmp -s "$out/one.tets" <(tets_by_coordinates "$out/all.mesh") ||
+    { echo "x$factor: the core of $np ranks has other tets than the one-rank core"; exit 1; }
+  log=$(run "$data/good/sphere966.off" -o "$out/parts.pvtu" --stop-after templates --size-factor "$factor"); code=$?
+  [[ $code -eq 0 ]] || { echo "core pieces: exit $code"; echo "$log"; exit 1; }
+  "$partet" "$data/good/sphere966.off" -o "$out/one.vtu" --stop-after templates --size-factor "$factor" -q
+  cmp -s <("$partet" check "$out/one.vtu" --json | grep -v '"mesh"') \
+         <("$partet" check "$out/parts.pvtu" --json | grep -v '"mesh"') ||
+    { echo "x$factor: partet check differs between the $np pieces and the one-rank core"; exit 1; }
+done
 
 log=$(run --version); code=$?
 [[ $code -eq 0 ]] || { echo "--version: exit $code"; exit 1; }

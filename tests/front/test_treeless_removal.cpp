@@ -1,8 +1,9 @@
-// Face removals with new vertices after tree-supported removals on the real
-// pipeline: the icosahedron and octahedron fronts close completely and fill
-// the surface; on sphere966 and blobby-shuffled the front shrinks and the
-// core plus all tets stays a valid partial mesh; new vertices carry ids in
-// their own space; two runs give the same mesh.
+// Tree-less face removals after tree-supported removals on the real
+// pipeline: every surface of data/ (good and fixable) and generated
+// multi-shell bodies close completely, and the result with the surface is
+// a valid mesh; new vertices carry ids in their own space; two runs give
+// the same mesh. Also the pieces: the deepest kernel point of a front, the
+// reopening of a tet (Front::remove_tet) and the tet behind a face.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -10,90 +11,213 @@
 #include <utility>
 
 #include "check/validate.hpp"
+#include "core/compact_mesh.hpp"
+#include "core/predicates.hpp"
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/initial_front.hpp"
-#include "front/steiner_removal.hpp"
+#include "front/kernel_point.hpp"
+#include "front/tet_incidence.hpp"
+#include "front/treeless_removal.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"
 #include "octree/build.hpp"
 #include "octree/classify.hpp"
 #include "octree/sizing.hpp"
 #include "surface/diagnose.hpp"
+#include "templates/manifold_core.hpp"
 #include "templates/template_mesh.hpp"
 #include "test_support.hpp"
 
 namespace partet::test {
 namespace {
 
-struct Meshed {
+// The pipeline of src/pipeline/mesh_command.cpp up to the initial front.
+struct Started {
   SurfaceMesh surface;
-  TetMesh out;
-  size_t tree_left = 0;  // faces left by tree-supported removals
-  size_t faces_left = 0;
-  size_t front_vertices = 0;  // before new vertices
+  RootCube root;
+  LinearOctree tree;
+  TemplateCore core;
+  InitialFront initial;
 };
 
-// The pipeline of src/pipeline/mesh_command.cpp through both removal steps.
-Meshed mesh_file(const std::string& name) {
+Started start(SurfaceMesh surface, const std::string& name) {
+  Started s;
+  s.surface = std::move(surface);
+  SurfaceSummary summary = diagnose_surface(s.surface, name);
+  s.root = make_root_cube(summary.bbox);
+  VertexSizing sizing = size_vertices(s.surface, s.root, SizingOptions{});
+  s.tree = build_octree(sizing.grid, sizing.level);
+  refine_for_triangles(s.tree, s.surface, s.root, sizing.level);
+  balance_octree(s.tree);
+  classify_leaves(s.tree, s.surface, s.root, sizing.size);
+  make_core_manifold(s.tree);
+  s.core = template_interior(s.tree, s.root);
+  s.initial = make_initial_front(s.tree, s.root, s.core, s.surface);
+  return s;
+}
+
+struct Meshed {
+  TetMesh out;
+  size_t faces_left = 0;
+  TreelessCounts counts;
+};
+
+// Both removal steps, then the checks every result must pass.
+Meshed mesh_surface(SurfaceMesh surface, const std::string& name) {
+  Started s = start(std::move(surface), name);
+  Front front(s.initial, s.tree, s.root);
   Meshed r;
-  r.surface = read_surface_file(data_path(name));
-  SurfaceSummary summary = diagnose_surface(r.surface, name);
-  RootCube root = make_root_cube(summary.bbox);
-  VertexSizing sizing = size_vertices(r.surface, root, SizingOptions{});
-  LinearOctree tree = build_octree(sizing.grid, sizing.level);
-  refine_for_triangles(tree, r.surface, root, sizing.level);
-  balance_octree(tree);
-  classify_leaves(tree, r.surface, root, sizing.size);
-  TemplateCore core = template_interior(tree, root);
-  InitialFront initial = make_initial_front(tree, root, core, r.surface);
-  Front front(initial, tree, root);
-  r.out = core.mesh;
-  r.tree_left = remove_faces_tree_supported(front, tree, root, r.out).faces_left;
-  r.front_vertices = front.num_vertices();
-  RemovalCounts n = remove_faces_with_new_vertices(front, tree, root, r.out);
-  r.faces_left = n.faces_left;
-  EXPECT_EQ(n.faces_left, front.num_alive_faces());
+  r.out = s.core.mesh;
+  const size_t tree_left = remove_faces_tree_supported(front, s.tree, s.root, r.out).faces_left;
+  const size_t front_vertices = front.num_vertices();
+  r.counts = remove_faces_treeless(front, s.tree, s.root, r.out);
+  r.faces_left = r.counts.faces_left;
+  EXPECT_EQ(r.faces_left, front.num_alive_faces());
   EXPECT_EQ(r.out.num_vertices(), front.num_vertices());
   if (!r.out.global_ids.empty()) {
     EXPECT_EQ(r.out.global_ids.size(), r.out.num_vertices());
-    for (size_t v = r.front_vertices; v < r.out.global_ids.size(); ++v)
+    for (size_t v = front_vertices; v < r.out.global_ids.size(); ++v)
       EXPECT_EQ(r.out.global_ids[v] & kSteinerVertexId, kSteinerVertexId) << name << " vertex " << v;
-    for (size_t v = 0; v < r.front_vertices; ++v)
+    for (size_t v = 0; v < front_vertices; ++v)
       EXPECT_NE(r.out.global_ids[v] & kSteinerVertexId, kSteinerVertexId) << name << " vertex " << v;
   }
-  std::printf("[ steiner  ] %-28s tree left %zu -> %zu faces, %zu new vertices\n", name.c_str(), r.tree_left,
-              r.faces_left, r.out.num_vertices() - r.front_vertices);
+  std::printf("[ treeless ] %-28s %zu -> %zu faces, %zu new vertices, %zu tets deleted, %zu star fills\n",
+              name.c_str(), tree_left, r.faces_left, r.counts.vertices_added, r.counts.tets_deleted,
+              r.counts.star_fills);
   ValidationResult partial = validate_mesh(r.out, nullptr);
   EXPECT_TRUE(partial.valid) << name << ": " << format_text(partial);
   if (r.faces_left == 0) {
-    ValidationResult full = validate_mesh(r.out, &r.surface);
+    r.out.tris = s.surface.tris;
+    for (uint32_t& v : r.out.tris) v += static_cast<uint32_t>(s.initial.core_vertices);
+    drop_unused_vertices(r.out);
+    ValidationResult full = validate_mesh(r.out, &s.surface);
     EXPECT_TRUE(full.valid) << name << ": " << format_text(full);
+    EXPECT_EQ(full.unused_vertices, 0u) << name;
   }
   return r;
 }
 
-TEST(FrontSteiner, SmallFrontsClose) {
-  for (const char* name : {"good/icosahedron.off", "good/octahedron.off"}) {
-    Meshed r = mesh_file(name);
-    EXPECT_EQ(r.faces_left, 0u) << name;
-  }
-  EXPECT_GT(mesh_file("good/icosahedron.off").tree_left, 0u);
+Meshed mesh_file(const std::string& name) { return mesh_surface(read_surface_file(data_path(name)), name); }
+
+TEST(FrontTreeless, EveryDataSurfaceCloses) {
+  for (const char* name :
+       {"good/cross.off", "good/cube-meshed.off", "good/cube.off", "good/dragknob.off", "good/eight.off",
+        "good/ellipsoid.off", "good/hedra.off", "good/icosahedron.off", "good/joint.off", "good/lever.stl",
+        "good/octahedron.off", "good/part.off", "good/pipe.off", "good/sphere966.off", "good/spool.off",
+        "good/star.off", "good/tripod.off", "good/u.off", "fixable/blobby-shuffled.off", "fixable/tet-shuffled.off"})
+    EXPECT_EQ(mesh_file(name).faces_left, 0u) << name;
 }
 
-TEST(FrontSteiner, LargerFrontsShrinkAndStayValid) {
-  for (const char* name : {"good/sphere966.off", "fixable/blobby-shuffled.off"}) {
-    Meshed r = mesh_file(name);
-    EXPECT_LT(r.faces_left, r.tree_left) << name;
+// `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
+SurfaceMesh placed(SurfaceMesh s, double factor, double dx, double dy, double dz) {
+  for (size_t v = 0; v < s.num_vertices(); ++v) {
+    s.xyz[3 * v] = s.xyz[3 * v] * factor + dx;
+    s.xyz[3 * v + 1] = s.xyz[3 * v + 1] * factor + dy;
+    s.xyz[3 * v + 2] = s.xyz[3 * v + 2] * factor + dz;
   }
+  return s;
 }
 
-TEST(FrontSteiner, Deterministic) {
+TEST(FrontTreeless, MultiShellBodiesClose) {
+  // sphere966 is a ball of radius 10 about the origin; the diagnosis turns
+  // inner shells into cavities.
+  const SurfaceMesh ball = read_surface_file(data_path("good/sphere966.off"));
+  const SurfaceMesh ico = read_surface_file(data_path("good/icosahedron.off"));
+  SurfaceMesh hollow = ball;
+  append(hollow, placed(ball, 0.45, 1, 0.5, 0.25));
+  EXPECT_EQ(mesh_surface(hollow, "ball with a ball cavity").faces_left, 0u);
+  SurfaceMesh two = ball;
+  append(two, placed(ball, 0.6, 17, 3, 1));
+  EXPECT_EQ(mesh_surface(two, "two disjoint balls").faces_left, 0u);
+  SurfaceMesh three = ball;
+  append(three, placed(ico, 2.5, -4.5, 0.3, 0.1));
+  append(three, placed(ico, 2, 4, 1, -0.2));
+  append(three, placed(ball, 0.2, 0.5, -5, 1));
+  EXPECT_EQ(mesh_surface(three, "ball with three cavities").faces_left, 0u);
+}
+
+TEST(FrontTreeless, Deterministic) {
   Meshed a = mesh_file("good/sphere966.off");
   Meshed b = mesh_file("good/sphere966.off");
   EXPECT_EQ(a.out.tets, b.out.tets);
   EXPECT_EQ(a.out.xyz, b.out.xyz);
   EXPECT_EQ(a.out.global_ids, b.out.global_ids);
+}
+
+TEST(FrontTreeless, DeepestKernelPointOfABox) {
+  // The front of a box with no core is the box seen from inside: its
+  // deepest point is the centre, at half the shortest side.
+  Started s = start(box_surface(2, 4, 6), "box");
+  Front front(s.initial, s.tree, s.root);
+  std::vector<uint32_t> faces;
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f)
+    if (front.alive(f)) faces.push_back(f);
+  ASSERT_EQ(s.core.mesh.num_tets(), 0u);
+  KernelPoint k = deepest_kernel_point(front, faces);
+  ASSERT_TRUE(k.found);
+  EXPECT_NEAR(k.depth, 1.0, 1e-9);
+  EXPECT_NEAR(k.point[0], 1.0, 1e-9);
+  for (uint32_t f : faces) {
+    const uint32_t* t = front.face(f);
+    EXPECT_GT(orient3d(front.point(t[0]), front.point(t[1]), front.point(t[2]), k.point), 0);
+  }
+}
+
+TEST(FrontTreeless, RemovingATetReopensItsFaces) {
+  Started s = start(box_surface(), "box");
+  Front front(s.initial, s.tree, s.root);
+  TetMesh out = s.core.mesh;
+  const size_t faces_before = front.num_alive_faces();
+  // One tet on the first face, then its removal: the front is back.
+  RemovalCounts n = remove_faces_tree_supported(front, s.tree, s.root, out);
+  ASSERT_GT(n.tets, 0u);
+  ASSERT_EQ(front.num_alive_faces(), 0u);
+  TetIncidence incidence(out);
+  // Behind a surface face (it looks into the body) lies no tet; behind its
+  // reverse lies the tet on it.
+  const uint32_t* t0 = s.initial.faces.data();
+  EXPECT_EQ(incidence.tet_behind(out, t0[0], t0[1], t0[2]), kNoTet);
+  EXPECT_NE(incidence.tet_behind(out, t0[0], t0[2], t0[1]), kNoTet);
+  std::vector<uint32_t> added, shrunk;
+  const size_t tets = out.num_tets();
+  for (uint32_t t = 0; t < tets; ++t) {
+    front.remove_tet(&out.tets[4 * size_t{t}], added, shrunk);
+    incidence.kill(t);
+  }
+  EXPECT_EQ(front.num_alive_faces(), faces_before);
+  EXPECT_EQ(incidence.num_dead(), tets);
+  incidence.drop_dead_tets(out);
+  EXPECT_EQ(out.num_tets(), 0u);
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+    if (!front.alive(f)) continue;
+    EXPECT_EQ(front.find_face(front.face(f)[0], front.face(f)[1], front.face(f)[2]), f);
+  }
+}
+
+TEST(FrontTreeless, TetBehindAFace) {
+  TetMesh cube = cube_tets();
+  TetIncidence incidence(cube);
+  for (uint32_t t = 0; t < cube.num_tets(); ++t) {
+    const uint32_t* q = &cube.tets[4 * size_t{t}];
+    // q3 is on the positive side of (q0, q1, q2), so on the negative side
+    // of (q0, q2, q1): t lies behind (q0, q2, q1).
+    EXPECT_EQ(incidence.tet_behind(cube, q[0], q[2], q[1]), t);
+  }
+}
+
+TEST(CompactMesh, DropsUnusedVerticesAndRenumbers) {
+  TetMesh m;
+  m.xyz = {9, 9, 9, 0, 0, 0, 1, 0, 0, 8, 8, 8, 0, 1, 0, 0, 0, 1};
+  m.tets = {1, 2, 4, 5};
+  m.tris = {1, 4, 2};
+  m.global_ids = {10, 11, 12, 13, 14, 15};
+  EXPECT_EQ(drop_unused_vertices(m), 2u);
+  EXPECT_EQ(m.tets, (std::vector<uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(m.tris, (std::vector<uint32_t>{0, 2, 1}));
+  EXPECT_EQ(m.global_ids, (std::vector<uint64_t>{11, 12, 14, 15}));
+  EXPECT_EQ(m.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(drop_unused_vertices(m), 0u);
 }
 
 }  // namespace

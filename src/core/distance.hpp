@@ -1,0 +1,52 @@
+// Point-to-triangle distance in doubles (closest point by Voronoi regions,
+// after Ericson, Real-Time Collision Detection §5.1.5), for size and spacing
+// heuristics only: geometric decisions use the exact predicates.
+#pragma once
+
+namespace partet {
+
+inline double squared_point_triangle_distance(const double* p, const double* a, const double* b, const double* c) {
+  auto sub = [](const double* x, const double* y, double* r) {
+    for (int k = 0; k < 3; ++k) r[k] = x[k] - y[k];
+  };
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  double ab[3], ac[3], ap[3], q[3];
+  sub(b, a, ab);
+  sub(c, a, ac);
+  sub(p, a, ap);
+  auto at = [&](double v, double w) {  // a + v ab + w ac
+    for (int k = 0; k < 3; ++k) q[k] = a[k] + v * ab[k] + w * ac[k];
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  double bp[3], cp[3];
+  sub(p, b, bp);
+  sub(p, c, cp);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp), d5 = dot(ab, cp), d6 = dot(ac, cp);
+  const double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
+  if (d1 <= 0 && d2 <= 0) {
+    at(0, 0);
+  } else if (d3 >= 0 && d4 <= d3) {
+    at(1, 0);
+  } else if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    at(d1 / (d1 - d3), 0);
+  } else if (d6 >= 0 && d5 <= d6) {
+    at(0, 1);
+  } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    at(0, d2 / (d2 - d6));
+  } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    at(1 - w, w);
+  } else {
+    const double denom = va + vb + vc;
+    if (!(denom != 0)) {
+      at(0, 0);
+    } else {
+      at(vb / denom, vc / denom);
+    }
+  }
+  double d[3];
+  sub(p, q, d);
+  return dot(d, d);
+}
+
+}  // namespace partet
