@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan fuzz bench-steps clean
+.PHONY: all deps build demo test test-asan fuzz bench-steps corpus-check clean
 
 all: build
 
@@ -29,6 +29,9 @@ test-asan: deps
 
 bench-steps: build
 	@bench/steps $(BUILD)
+
+corpus-check: build
+	@scripts/corpus-check $(BUILD) $(or $(ROUNDS),3)
 
 fuzz:
 	@PARTET_FUZZ_DEPS=1 scripts/install-deps

@@ -1,5 +1,6 @@
 // Tree-less face removals: rounds over the front components, star fills,
-// growth by tet deletion and partial cones (see treeless_removal.hpp).
+// growth by tet deletion, partial cones, patch cones and advances (see
+// treeless_removal.hpp).
 #include "front/treeless_removal.hpp"
 
 #include <algorithm>
@@ -26,8 +27,10 @@ double squared_distance(const double* x, const double* y) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-constexpr size_t kMaxCavityFaces = 256;  // largest component tried for a star point, or grown
+constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown) as one cavity
 constexpr int kMaxGrowth = 8;
+constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
+constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
 
 class TreelessRemover {
  public:
@@ -53,6 +56,11 @@ class TreelessRemover {
   // the number of tets made (the vertex is dropped when 0).
   size_t cone(const std::vector<uint32_t>& faces, const double* q);
   bool fill(std::vector<uint32_t> faces);
+  // Patch cones over the given faces: around each seed face (smallest
+  // first), the breadth-first patch of the given faces still alive
+  // (kPatchSizes faces, largest first) is coned to its deepest kernel point
+  // when that sees every patch face. Returns the number of cones made.
+  size_t patch_cones(const std::vector<uint32_t>& faces);
   // Classic advancing-front step on face f: an existing front vertex near
   // the ideal apex (above the centroid at the height of the regular tet),
   // else a new vertex there or lower; false when none is valid.
@@ -202,7 +210,7 @@ bool TreelessRemover::reopen_blockers(const std::vector<uint32_t>& faces, const 
 bool TreelessRemover::fill(std::vector<uint32_t> faces) {
   KernelPoint kernel;
   for (int growth = 0;; ++growth) {
-    if (faces.size() > kMaxCavityFaces) return false;
+    if (faces.size() > kMaxGrownFaces) return false;
     kernel = deepest_kernel_point(front_, faces);
     // Candidates: the kernel's deepest point, the mean of the face
     // centroids, the mean of the vertices.
@@ -237,9 +245,55 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
     find_components();
     faces = component_of(seed);
   }
-  if (!kernel.found) return false;
-  const bool made = cone(faces, kernel.point) > 0;
-  counts_.partial_cones += made;
+  if (kernel.found && cone(faces, kernel.point) > 0) {
+    ++counts_.partial_cones;
+    return true;
+  }
+  std::vector<uint32_t> alive;
+  for (uint32_t f : faces)
+    if (front_.alive(f)) alive.push_back(f);
+  return patch_cones(alive) > 0;
+}
+
+size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
+  // Adjacency by shared edge, over the given faces.
+  std::vector<std::pair<uint64_t, uint32_t>> edge_face;
+  for (uint32_t f : faces) {
+    const uint32_t* t = front_.face(f);
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t x = std::min(t[i], t[(i + 1) % 3]), y = std::max(t[i], t[(i + 1) % 3]);
+      edge_face.emplace_back((uint64_t{x} << 32) | y, f);
+    }
+  }
+  std::sort(edge_face.begin(), edge_face.end());
+  std::vector<std::pair<double, uint32_t>> order;
+  for (uint32_t f : faces) order.emplace_back(face_size(f), f);
+  std::sort(order.begin(), order.end());
+  std::vector<uint32_t> patch;
+  size_t made = 0;
+  for (const auto& [size, seed] : order) {
+    for (size_t target : kPatchSizes) {
+      if (!front_.alive(seed)) break;
+      // Breadth-first patch of alive faces around the seed.
+      patch.assign(1, seed);
+      for (size_t head = 0; head < patch.size() && patch.size() < target; ++head) {
+        const uint32_t* t = front_.face(patch[head]);
+        for (int i = 0; i < 3 && patch.size() < target; ++i) {
+          const uint32_t x = std::min(t[i], t[(i + 1) % 3]), y = std::max(t[i], t[(i + 1) % 3]);
+          const uint64_t key = (uint64_t{x} << 32) | y;
+          for (auto it = std::lower_bound(edge_face.begin(), edge_face.end(), std::make_pair(key, uint32_t{0}));
+               it != edge_face.end() && it->first == key && patch.size() < target; ++it)
+            if (front_.alive(it->second) && std::find(patch.begin(), patch.end(), it->second) == patch.end())
+              patch.push_back(it->second);
+        }
+      }
+      const KernelPoint kernel = deepest_kernel_point(front_, patch);
+      if (!kernel.found || !sees_all(patch, kernel.point) || cone(patch, kernel.point) == 0) continue;
+      ++counts_.partial_cones;
+      ++made;
+      break;
+    }
+  }
   return made;
 }
 
@@ -394,8 +448,10 @@ TreelessCounts TreelessRemover::run() {
       for (uint32_t f : cavity) all_alive = all_alive && front_.alive(f);
       if (all_alive) fill(cavity);
     }
-    // Components too large for one star point: advance them face by face, smallest face first, each advance followed by
-    // tree-supported removals of the faces near it.
+    // Components too large for one star point: patch cones, then the faces
+    // still alive are advanced one by one, smallest face first, each advance
+    // followed by tree-supported removals of the faces near it.
+    patch_cones(stuck);
     std::vector<std::pair<double, uint32_t>> order;
     for (uint32_t f : stuck)
       if (front_.alive(f)) order.emplace_back(face_size(f), f);

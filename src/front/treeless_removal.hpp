@@ -20,10 +20,25 @@
 //  2. growth: otherwise the faces that do not see q and have a tet behind
 //     them (they are not surface triangles) are reopened: the tet behind
 //     each is deleted (Front::remove_tet), the component grows into it, and
-//     step 1 is tried again on the grown component, up to kMaxGrowth times;
+//     step 1 is tried again on the grown component, up to kMaxGrowth times
+//     (the component is left for this round when it grows beyond
+//     kMaxGrownFaces = 4 kMaxCavityFaces);
 //  3. partial cone: when the component still has no star point, q is added
 //     and the faces that see it are coned to it where valid (q is dropped
-//     again when none is): the cavity is split into smaller ones.
+//     again when none is): the cavity is split into smaller ones. When no
+//     face is coned, patch cones (below) run on the component.
+// Then the components larger than kMaxCavityFaces get
+//  4. patch cones: for each of their faces, by increasing sum of squared
+//     edge lengths (ties by index), still alive: the breadth-first patch
+//     (across the edges of each face in turn, lower face index first) of at most 64, else 24,
+//     else 8 of those faces still alive around it, whose deepest kernel
+//     point q, when it sees every patch face exactly, is added and coned to
+//     the patch faces where valid (as in step 3);
+//  5. advances: each face still alive, in the same order, gets a tet on a
+//     front vertex near the ideal apex (above the centroid at the height of
+//     the regular tet) or on a new, well spaced vertex there or lower,
+//     where valid, followed by tree-supported removals from the faces near
+//     it.
 // After each round remove_faces_tree_supported runs over the whole front,
 // so that neighbouring faces use the new vertices (it also runs first).
 // Points are computed in doubles; every decision on them is exact.

@@ -159,13 +159,18 @@ void check_options(const MeshOptions& o) {
   if (!(o.too_close >= 0)) throw InputError("--too-close must be zero or positive");
 }
 
-ojson build_tree(MeshState& s, const MeshOptions& o) {
+// The root cube and the level of every surface vertex (same on every rank).
+void size_surface(MeshState& s, const MeshOptions& o) {
   s.root = make_root_cube(s.summary.bbox);
   SizingOptions sizing;
   sizing.max_size = o.max_size;
   sizing.size_factor = o.size_factor;
   sizing.max_level = o.max_level;
   s.sizing = size_vertices(s.surface, s.root, sizing);
+}
+
+ojson build_tree(MeshState& s, const MeshOptions& o) {
+  size_surface(s, o);
   s.tree = build_octree(s.sizing.grid, s.sizing.level);
   refine_for_triangles(s.tree, s.surface, s.root, s.sizing.level);
   balance_octree(s.tree);
@@ -212,12 +217,7 @@ void share_surface(const Comm& comm, MeshState& s) {
 // its slice of the vertices to the distributed build.
 ojson build_tree_distributed(MeshState& s, const MeshOptions& o, const Comm& comm) {
   share_surface(comm, s);
-  s.root = make_root_cube(s.summary.bbox);
-  SizingOptions sizing;
-  sizing.max_size = o.max_size;
-  sizing.size_factor = o.size_factor;
-  sizing.max_level = o.max_level;
-  s.sizing = size_vertices(s.surface, s.root, sizing);
+  size_surface(s, o);
   const size_t n = s.sizing.level.size(), p = static_cast<size_t>(comm.size());
   const size_t r = static_cast<size_t>(comm.rank()), begin = n * r / p, end = n * (r + 1) / p;
   const std::vector<uint32_t> grid(s.sizing.grid.begin() + static_cast<std::ptrdiff_t>(3 * begin),
