@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -18,6 +19,14 @@ namespace partet {
 namespace {
 
 constexpr uint64_t kNeverFailed = std::numeric_limits<uint64_t>::max();
+// Targets a face tries in a capped pass: three quarters of the faces take
+// their first target, and a face whose first 8 fail rarely succeeds soon.
+constexpr size_t kCappedTargets = 8;
+// Targets a face tries in a full pass: long faces can have hundreds, and
+// past the first few dozen they almost never make a valid tet.
+constexpr size_t kFullTargets = 64;
+// See Remover::run: a productive pass makes a tet per this many waiting faces.
+constexpr size_t kProductive = 4;
 
 struct Target {
   double score;
@@ -46,12 +55,15 @@ class Remover {
   RemovalCounts run(const std::vector<uint32_t>* seeds);
 
  private:
-  // Tries one face; true when a tet was made.
-  bool try_face(uint32_t f);
+  // Tries one face, its best kCappedTargets targets or, when `full`, all of
+  // them; true when a tet was made.
+  bool try_face(uint32_t f, bool full);
   void neighbourhood(uint32_t f);
   bool neighbourhood_changed_since(uint64_t stamp) const;
   bool neighbourhood_foreign() const;
   void make_tet(uint32_t f, uint32_t p);
+  // near_ = the front over the leaves that meet the tet's bounding box.
+  void gather_around_tet(const double* pa, const double* pb, const double* pc, const double* pp);
 
   Front& front_;
   LinearOctree& tree_;
@@ -60,11 +72,21 @@ class Remover {
   const RemovalOptions& options_;
   RemovalCounts counts_;
 
-  std::vector<uint32_t> queue_;
-  std::vector<uint64_t> failed_at_;  // per face slot: change counter at its last failure
+  // Min-heap of (size, face): the smallest faces are removed first.
+  struct Queued {
+    double size;
+    uint32_t face;
+    bool operator>(const Queued& o) const { return size != o.size ? size > o.size : face > o.face; }
+  };
+  std::vector<Queued> queue_;
+  void push(uint32_t f);
+  // Per face slot: the change counter at its last failure in a capped pass
+  // (a full failure counts as one too) and in a full pass.
+  std::vector<uint64_t> failed_capped_at_, failed_full_at_;
   std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
   double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
-  std::vector<size_t> leaves_;
+  std::vector<size_t> leaves_;      // over the neighbourhood box: where targets come from
+  std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
   NearFront near_;
   std::vector<Target> targets_;
   std::vector<uint32_t> added_, shrunk_;
@@ -75,9 +97,18 @@ void Remover::neighbourhood(uint32_t f) {
   const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
   const double longest =
       std::sqrt(std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])}));
+  // The box is centred ahead of the face, where targets make good tets.
+  double normal[3];
+  const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+  const double w[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+  normal[0] = u[1] * w[2] - u[2] * w[1];
+  normal[1] = u[2] * w[0] - u[0] * w[2];
+  normal[2] = u[0] * w[1] - u[1] * w[0];
+  const double norm = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  const double ahead = norm > 0 ? options_.ahead * longest / norm : 0;
   const double half = options_.reach * longest;
   for (int k = 0; k < 3; ++k) {
-    const double centre = (p[0][k] + p[1][k] + p[2][k]) / 3;
+    const double centre = (p[0][k] + p[1][k] + p[2][k]) / 3 + ahead * normal[k];
     const double lo = std::min({p[0][k], p[1][k], p[2][k], centre - half});
     const double hi = std::max({p[0][k], p[1][k], p[2][k], centre + half});
     box_lo_[k] = std::max(lo, root_.origin[k]);
@@ -103,40 +134,71 @@ bool Remover::neighbourhood_foreign() const {
 void Remover::make_tet(uint32_t f, uint32_t p) {
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_);
   ++counts_.tets;
-  for (uint32_t g : added_) queue_.push_back(g);
-  failed_at_.resize(front_.num_face_slots(), kNeverFailed);
+  for (uint32_t g : added_) push(g);
+  failed_capped_at_.resize(front_.num_face_slots(), kNeverFailed);
+  failed_full_at_.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
 }
 
-bool Remover::try_face(uint32_t f) {
-  gather_near_front(front_, leaves_, near_);
+void Remover::push(uint32_t f) {
+  const uint32_t* t = front_.face(f);
+  const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
+  const double size = std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])});
+  queue_.push_back({size, f});
+  std::push_heap(queue_.begin(), queue_.end(), std::greater<Queued>());
+}
+
+bool Remover::try_face(uint32_t f, bool full) {
   const uint32_t* t = front_.face(f);
   const uint32_t a = t[0], b = t[1], c = t[2];
   const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
   targets_.clear();
-  for (uint32_t v : near_.vertices) {
-    if (v == a || v == b || v == c) continue;
-    const double* q = front_.point(v);
-    bool inside = true;
-    for (int k = 0; k < 3; ++k) inside = inside && box_lo_[k] <= q[k] && q[k] <= box_hi_[k];
-    if (!inside || orient3d(pa, pb, pc, q) <= 0) continue;
-    const double shape = shape_measure(pa, pb, pc, q);
-    if (shape < options_.min_quality) continue;
-    const int closed = (front_.find_face(b, c, v) != kNoIndex) + (front_.find_face(a, v, c) != kNoIndex) +
-                       (front_.find_face(a, b, v) != kNoIndex);
-    targets_.push_back({shape * (1 + closed), v});
-  }
+  for (size_t leaf : leaves_)
+    for (uint32_t v = front_.first_vertex(leaf); v != kNoIndex; v = front_.next_vertex(v)) {
+      if (v == a || v == b || v == c) continue;
+      const double* q = front_.point(v);
+      bool inside = true;
+      for (int k = 0; k < 3; ++k) inside = inside && box_lo_[k] <= q[k] && q[k] <= box_hi_[k];
+      if (!inside || orient3d(pa, pb, pc, q) <= 0) continue;
+      const double shape = shape_measure(pa, pb, pc, q);
+      if (shape < options_.min_quality) continue;
+      const int closed = (front_.find_face(b, c, v) != kNoIndex) + (front_.find_face(a, v, c) != kNoIndex) +
+                         (front_.find_face(a, b, v) != kNoIndex);
+      targets_.push_back({shape * (1 + closed), v});
+    }
   std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {
     return x.score != y.score ? x.score > y.score : x.vertex < y.vertex;
   });
-  for (const Target& target : targets_) {
+  // The first targets are checked against the front around their tet
+  // alone (most faces take their first target); the rest, in full mode
+  // only, against one gather over the whole neighbourhood.
+  const size_t n = std::min(targets_.size(), full ? kFullTargets : kCappedTargets);
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t p = targets_[i].vertex;
     ++counts_.checks;
-    if (check_removal(front_, f, target.vertex, near_) == RemovalVerdict::kValid) {
-      make_tet(f, target.vertex);
+    if (i < kCappedTargets) {
+      gather_around_tet(pa, pb, pc, front_.point(p));
+    } else if (i == kCappedTargets) {
+      gather_near_front(front_, leaves_, near_);
+    }
+    if (check_removal(front_, f, p, near_) == RemovalVerdict::kValid) {
+      make_tet(f, p);
       return true;
     }
   }
   return false;
+}
+
+void Remover::gather_around_tet(const double* pa, const double* pb, const double* pc, const double* pp) {
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min({pa[k], pb[k], pc[k], pp[k]});
+    hi[k] = std::max({pa[k], pb[k], pc[k], pp[k]});
+  }
+  uint32_t glo[3], ghi[3];
+  grid_range(root_, lo, hi, glo, ghi);
+  front_.query().leaves_in_range(glo, ghi, tet_leaves_);
+  gather_near_front(front_, tet_leaves_, near_);
 }
 
 RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
@@ -146,39 +208,51 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   out_.xyz.insert(out_.xyz.end(), front_.xyz().begin() + 3 * have, front_.xyz().end());
   if (ids) out_.global_ids.insert(out_.global_ids.end(), front_.global_ids().begin() + have, front_.global_ids().end());
 
-  failed_at_.assign(front_.num_face_slots(), kNeverFailed);
+  failed_capped_at_.assign(front_.num_face_slots(), kNeverFailed);
+  failed_full_at_.assign(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
   if (seeds) {
     for (uint32_t f : *seeds)
-      if (front_.alive(f)) queue_.push_back(f);
+      if (front_.alive(f)) push(f);
   } else {
     for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
-      if (front_.alive(f)) queue_.push_back(f);
+      if (front_.alive(f)) push(f);
   }
   std::vector<uint32_t> waiting;
+  bool full = false;  // checking every target of a face, not only the best ones
   while (!queue_.empty()) {
     ++counts_.passes;
     const size_t made_before = counts_.tets;
     waiting.clear();
-    for (size_t i = 0; i < queue_.size(); ++i) {
-      const uint32_t f = queue_[i];
+    while (!queue_.empty()) {
+      std::pop_heap(queue_.begin(), queue_.end(), std::greater<Queued>());
+      const uint32_t f = queue_.back().face;
+      queue_.pop_back();
       if (!front_.alive(f)) continue;
       neighbourhood(f);
       if (neighbourhood_foreign()) {
         foreign_[f] = 1;
         continue;
       }
-      if (failed_at_[f] != kNeverFailed && !neighbourhood_changed_since(failed_at_[f])) {
+      std::vector<uint64_t>& failed_at = full ? failed_full_at_ : failed_capped_at_;
+      if (failed_at[f] != kNeverFailed && !neighbourhood_changed_since(failed_at[f])) {
         waiting.push_back(f);
         continue;
       }
-      if (!try_face(f)) {
-        failed_at_[f] = front_.changes();
+      if (!try_face(f, full)) {
+        failed_capped_at_[f] = front_.changes();
+        if (full) failed_full_at_[f] = front_.changes();
         waiting.push_back(f);
       }
     }
-    if (counts_.tets == made_before) break;
-    queue_.swap(waiting);
+    // A pass is productive when it makes a tet for every kProductive faces
+    // left waiting; later passes then pay off. After an unproductive capped
+    // pass comes one full pass; after an unproductive full pass, what is left
+    // goes to the tree-less removals, which close it for less.
+    const bool productive = (counts_.tets - made_before) * kProductive >= std::max<size_t>(waiting.size(), 1);
+    if (full && !productive) break;
+    full = !productive;
+    for (uint32_t g : waiting) push(g);
   }
   for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
     if (front_.alive(f)) {

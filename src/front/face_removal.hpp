@@ -7,9 +7,8 @@
 //    root cube, and the leaves over it (LeafRangeQuery). When one of them
 //    is owned by another rank the face is skipped for this call (removals
 //    never communicate: it waits for a repartitioning);
-//  - targets: the front vertices of those leaves that lie in the box (so
-//    that every tet, hence everything its checks need, stays inside the
-//    box) with orient3d(a, b, c, p) > 0;
+//  - targets: the front vertices of those leaves that lie in the box with
+//    orient3d(a, b, c, p) > 0;
 //  - order: by score = q × (1 + closed) descending, then vertex index, where
 //    q = √2 det / l_rms³ (6 × volume over the cube of the root mean square
 //    edge, 1 for the regular tet) and `closed` counts the tet's other faces
@@ -19,16 +18,21 @@
 //  - the first target passing check_removal (removal_checks.hpp) makes the
 //    tet (a, b, c, p) (positively oriented), appended to `out`; the front
 //    is updated and boundary or too-close leaves whose front became empty
-//    are reclassified kDone.
+//    are reclassified kDone. A target is checked against the front over the
+//    leaves that meet its tet's box (most faces take their first target);
+//    past the first few, against one gather over the whole neighbourhood.
 //
-// Order and progress. A FIFO queue is seeded with the alive faces in index
-// order; faces made by removals are appended to it. A face that finds no
-// valid target waits for the next pass, and is retried there only when one
-// of its neighbourhood leaves changed since it failed (its answer depends
-// on nothing else). A pass that makes no tet ends the call. Termination:
-// every tet has positive volume inside the unmeshed region and the tets
-// made are interior-disjoint tets on a fixed finite vertex set, so a call
-// makes finitely many tets, and each further pass makes at least one.
+// Order and progress. Faces wait in a min-heap by longest edge (smallest
+// first, ties by index), seeded with the alive faces; faces made by
+// removals join it. A pass empties the heap. In a capped pass a face tries
+// its best few targets; a face that finds no valid one waits for the next
+// pass, and is retried there only when one of its neighbourhood leaves
+// changed since it failed (its answer depends on nothing else). A capped
+// pass that makes no tet is followed by a full pass, where faces try every
+// target; a full pass that makes no tet ends the call. Termination: every
+// tet has positive volume inside the unmeshed region and the tets made are
+// interior-disjoint tets on a fixed finite vertex set, so a call makes
+// finitely many tets, and every other pass makes at least one.
 // Deterministic: no hash iteration, ties broken by index.
 #pragma once
 
@@ -44,7 +48,8 @@ namespace partet {
 
 struct RemovalOptions {
   int rank = 0;             // leaves owned by another rank are off limits
-  double reach = 2.0;       // neighbourhood half-size in longest base edges
+  double reach = 1.0;       // neighbourhood half-size in longest base edges
+  double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
 };
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "octree/box_triangle.hpp"
 
 namespace partet {
 
@@ -49,6 +50,7 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
   const size_t n = initial.num_faces();
   faces_.reserve(3 * n);
   alive_.reserve(n);
+  face_boxes_.reserve(6 * n);
   face_of_triple_.reserve(2 * n);
   edge_uses_.reserve(3 * n);
   for (size_t f = 0; f < n; ++f) {
@@ -123,10 +125,14 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
     lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
     hi[k] = std::max({point(a)[k], point(b)[k], point(c)[k]});
   }
+  face_boxes_.insert(face_boxes_.end(), {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]});
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
   query_.leaves_in_range(glo, ghi, leaves_scratch_);
   for (size_t leaf : leaves_scratch_) {
+    double leaf_lo[3], leaf_hi[3];
+    leaf_box(tree_, root_, leaf, leaf_lo, leaf_hi);
+    if (!box_meets_triangle(leaf_lo, leaf_hi, point(a), point(b), point(c))) continue;
     uint32_t e;
     if (free_entry_ != kNoIndex) {
       e = free_entry_;

@@ -13,12 +13,13 @@
 //    vertices (at most one: a face whose reverse is alive closes both), and
 //    a hash from the sorted vertex pair to the number of alive faces using
 //    that edge (front edges);
-//  - the leaf index: every alive face is listed in every leaf that contains
-//    a grid cell of grid_range(face's bounding box). A face meeting a box B
-//    is then listed in at least one leaf of grid_range(B) (a point common to
-//    both boxes lies in a leaf of both ranges), so gathering the faces of
-//    the leaves over B finds every face that can meet B; the validity
-//    checks need exactly that. Front vertices are listed in the leaf
+//  - the leaf index: every alive face is listed in every leaf whose closed
+//    box it meets (exact box-triangle test over the leaves of
+//    grid_range(face's bounding box)). A face meeting a box B at a point x
+//    is then listed in a leaf whose closed box holds x, and that leaf is
+//    one of grid_range(B) (padded by a cell), so gathering the faces of the
+//    leaves over B finds every face that can meet B; the validity checks
+//    need exactly that. Front vertices are listed in the leaf
 //    containing them. Both lists are doubly linked head/next lists in flat
 //    arrays (face entries come from a pool with a free list).
 // Every change stamps the leaves whose lists changed with a change counter,
@@ -63,6 +64,8 @@ class Front {
   size_t num_alive_faces() const { return alive_count_; }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
   const uint32_t* face(uint32_t f) const { return &faces_[3 * size_t{f}]; }
+  // The face's bounding box: min xyz, then max xyz.
+  const double* face_box(uint32_t f) const { return &face_boxes_[6 * size_t{f}]; }
 
   // The alive face with vertices {a, b, c} in any order, or kNoIndex.
   uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
@@ -134,6 +137,7 @@ class Front {
 
   std::vector<uint32_t> faces_;
   std::vector<uint8_t> alive_;
+  std::vector<double> face_boxes_;  // 6 per face slot
   std::vector<uint32_t> face_first_entry_;  // chain of the face's entries via entry_chain_
   size_t alive_count_ = 0;
 

@@ -16,23 +16,16 @@ struct Box {
   double lo[3], hi[3];
 };
 
-void append_box(const double* const* p, int n, std::vector<double>& boxes) {
-  for (int k = 0; k < 3; ++k) {
-    double lo = p[0][k];
-    for (int i = 1; i < n; ++i) lo = std::min(lo, p[i][k]);
-    boxes.push_back(lo);
-  }
-  for (int k = 0; k < 3; ++k) {
-    double hi = p[0][k];
-    for (int i = 1; i < n; ++i) hi = std::max(hi, p[i][k]);
-    boxes.push_back(hi);
-  }
-}
-
 // Box b against the box stored at `stored` (min xyz, max xyz).
 bool box_meets_stored(const Box& b, const double* stored) {
   for (int k = 0; k < 3; ++k)
     if (b.hi[k] < stored[k] || stored[3 + k] < b.lo[k]) return false;
+  return true;
+}
+
+bool boxes_meet(const Box& x, const Box& y) {
+  for (int k = 0; k < 3; ++k)
+    if (x.hi[k] < y.lo[k] || y.hi[k] < x.lo[k]) return false;
   return true;
 }
 
@@ -91,9 +84,6 @@ bool meets_beyond_shared_vertex(const double* s, const double* o, const double* 
 void gather_near_front(const Front& front, const std::vector<size_t>& leaves, NearFront& near) {
   near.faces.clear();
   near.vertices.clear();
-  near.edges.clear();
-  near.face_boxes.clear();
-  near.edge_boxes.clear();
   // A face is listed in every leaf its box overlaps: take it once (marks,
   // not sorting: this runs for every face removal attempt).
   if (near.face_mark.size() < front.num_face_slots()) near.face_mark.resize(front.num_face_slots(), 0);
@@ -109,20 +99,6 @@ void gather_near_front(const Front& front, const std::vector<size_t>& leaves, Ne
       near.faces.push_back(f);
     }
     for (uint32_t v = front.first_vertex(leaf); v != kNoIndex; v = front.next_vertex(v)) near.vertices.push_back(v);
-  }
-  for (uint32_t f : near.faces) {
-    const uint32_t* t = front.face(f);
-    for (int k = 0; k < 3; ++k)
-      if (t[k] < t[(k + 1) % 3]) near.edges.push_back((uint64_t{t[k]} << 32) | t[(k + 1) % 3]);
-  }
-  for (uint32_t f : near.faces) {
-    const uint32_t* t = front.face(f);
-    const double* p[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
-    append_box(p, 3, near.face_boxes);
-  }
-  for (uint64_t key : near.edges) {
-    const double* p[2] = {front.point(static_cast<uint32_t>(key >> 32)), front.point(static_cast<uint32_t>(key))};
-    append_box(p, 2, near.edge_boxes);
   }
 }
 
@@ -174,37 +150,35 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
       return RemovalVerdict::kVertexInside;
   }
 
-  // (ii) New edges against front faces.
-  if (new_edge[0] || new_edge[1] || new_edge[2]) {
-    Box edge_box[3];
-    for (int k = 0; k < 3; ++k) {
-      const double* e[2] = {pp, front.point(ends[k])};
-      edge_box[k] = box_of(e, 2);
-    }
-    for (size_t i = 0; i < near.faces.size(); ++i) {
-      const double* face_box = &near.face_boxes[6 * i];
-      if (!box_meets_stored(tet_box, face_box)) continue;
-      const uint32_t* t = front.face(near.faces[i]);
-      for (int k = 0; k < 3; ++k) {
-        if (!new_edge[k] || !box_meets_stored(edge_box[k], face_box)) continue;
-        if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
-      }
-    }
+  // (ii) New edges against front faces, (iii) new faces against front
+  // edges; only faces whose box meets the tet's box matter for either.
+  const bool any_new_edge = new_edge[0] || new_edge[1] || new_edge[2];
+  const bool any_new_side = new_side[0] || new_side[1] || new_side[2];
+  if (!any_new_edge && !any_new_side) return RemovalVerdict::kValid;
+  Box edge_box[3], side_box[3];
+  for (int k = 0; k < 3; ++k) {
+    const double* e[2] = {pp, front.point(ends[k])};
+    edge_box[k] = box_of(e, 2);
+    const double* sp[3] = {front.point(sides[k][0]), front.point(sides[k][1]), front.point(sides[k][2])};
+    side_box[k] = box_of(sp, 3);
   }
-
-  // (iii) New faces against front edges.
-  if (new_side[0] || new_side[1] || new_side[2]) {
-    Box side_box[3];
-    for (int s = 0; s < 3; ++s) {
-      const double* sp[3] = {front.point(sides[s][0]), front.point(sides[s][1]), front.point(sides[s][2])};
-      side_box[s] = box_of(sp, 3);
+  for (uint32_t g : near.faces) {
+    const double* face_box = front.face_box(g);
+    if (!box_meets_stored(tet_box, face_box)) continue;
+    const uint32_t* t = front.face(g);
+    for (int k = 0; k < 3; ++k) {
+      if (!new_edge[k] || !box_meets_stored(edge_box[k], face_box)) continue;
+      if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
     }
-    for (size_t i = 0; i < near.edges.size(); ++i) {
-      const double* edge_box = &near.edge_boxes[6 * i];
-      if (!box_meets_stored(tet_box, edge_box)) continue;
-      const uint32_t u = static_cast<uint32_t>(near.edges[i] >> 32), w = static_cast<uint32_t>(near.edges[i]);
+    if (!any_new_side) continue;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t u = t[k], w = t[(k + 1) % 3];
+      if (u > w) continue;  // the edge is checked from the face running along it upwards
+      const double* ends_uw[2] = {front.point(u), front.point(w)};
+      const Box uw = box_of(ends_uw, 2);
+      if (!boxes_meet(tet_box, uw)) continue;
       for (int s = 0; s < 3; ++s) {
-        if (!new_side[s] || !box_meets_stored(side_box[s], edge_box)) continue;
+        if (!new_side[s] || !boxes_meet(side_box[s], uw)) continue;
         if (segment_conflicts(front, u, w, sides[s])) return RemovalVerdict::kFaceCrossesEdge;
       }
     }

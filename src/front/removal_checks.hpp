@@ -39,19 +39,15 @@ namespace partet {
 struct NearFront {
   std::vector<uint32_t> faces;       // alive faces, each once, in leaf order
   std::vector<uint32_t> vertices;    // front vertices, in leaf order
-  // Edges of `faces` as (min << 32) | max, taken from the faces that run
-  // along them from the lower to the higher index: every edge that meets
-  // the gathered leaves is there (each front edge is used as often in both
-  // directions, and both faces of an edge are indexed where the edge is).
-  std::vector<uint64_t> edges;
-  std::vector<double> face_boxes;    // 6 per face: bounding box min xyz, max xyz
-  std::vector<double> edge_boxes;    // 6 per edge, the same
   std::vector<uint32_t> face_mark;   // per face slot: the gather that last took it
   uint32_t gather = 0;
 };
 
-// Replaces `near` with the faces listed in `leaves` (Front's leaf index),
-// their edges, and the front vertices of those leaves.
+// Replaces `near` with the faces listed in `leaves` (Front's leaf index)
+// and the front vertices of those leaves. The front edges that meet the
+// leaves are edges of those faces: both faces along an edge are listed
+// wherever the edge is, and check_removal takes each edge from the face
+// running along it from its lower to its higher vertex index.
 void gather_near_front(const Front& front, const std::vector<size_t>& leaves, NearFront& near);
 
 enum class RemovalVerdict : uint8_t {

@@ -423,7 +423,7 @@ TreelessCounts TreelessRemover::run() {
   tree_pass();  // also appends the front vertices `out` lacks
   ids_ = out_.global_ids.size() == out_.num_vertices();
   vertex_budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
-  deletion_budget_ = 16 * front_.num_alive_faces() + 256;
+  deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;

@@ -8,7 +8,7 @@
 //
 // Rounds, until the front is empty, a round changes nothing, or a budget
 // is spent (new vertices: 4 x the alive faces at the start + 64; deleted
-// tets: 16 x those faces + 256). A round splits the alive faces into
+// tets: 64 x those faces + 1024). A round splits the alive faces into
 // components (faces sharing an edge) and, for each component of at most
 // kMaxCavityFaces faces in order of its lowest face index:
 //  1. star fill: q = the deepest point of the component's kernel

@@ -73,12 +73,14 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
 
 }  // namespace
 
+double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
+
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch) {
   const uint32_t* v = topo.tet(t);
   double centroid[3];
   for (int i = 0; i < 3; ++i)
     centroid[i] = (topo.point(v[0])[i] + topo.point(v[1])[i] + topo.point(v[2])[i] + topo.point(v[3])[i]) / 4;
-  const double bar = std::min(target, quality_of_angle(kShortfallAngle));
+  const double bar = insertion_bar(target);
   std::vector<uint32_t> cavity = {t};
   for (int f = 0; f < 4; ++f)
     if (topo.twin(4 * t + f) != TetTopology::kNone) cavity.push_back(topo.twin(4 * t + f) / 4);

@@ -27,6 +27,10 @@ namespace partet {
 
 inline constexpr uint64_t kOptimizerVertexId = (uint64_t{1} << 63) | (uint64_t{1} << 61);
 
+// The shortfall bar for a quality target: only tets below it are offered a
+// vertex (an insertion must lower the shortfall, which they carry).
+double insertion_bar(double target);
+
 // Tries the cavities of tet t in turn; true when a vertex was inserted.
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch);
 

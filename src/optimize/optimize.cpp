@@ -4,8 +4,8 @@
 //     best new worst quality is applied if it beats its cavity's worst. New
 //     tets still below the target join the end of the work list, whose
 //     length is capped.
-//  2. insertion: a new interior vertex for each tet still below the target,
-//     worst first, where it pays (insertion.hpp);
+//  2. insertion: a new interior vertex for each tet still below the
+//     insertion bar, worst first, where it pays (insertion.hpp);
 //  3. smoothing: the free vertices of the tets still below the target, in
 //     index order (inserted vertices are free).
 // Each applied change strictly raises the ascending sequence of tet
@@ -99,8 +99,9 @@ size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats) {
 // Step 2 of a pass; the number of vertices inserted.
 size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratch) {
   size_t inserted = 0;
-  for (uint32_t t : tets_below(topo, target))
-    if (topo.alive(t) && quality_of(topo, t) < target) inserted += insert_vertex(topo, t, target, scratch);
+  const double bar = insertion_bar(target);
+  for (uint32_t t : tets_below(topo, bar))
+    if (topo.alive(t) && quality_of(topo, t) < bar) inserted += insert_vertex(topo, t, target, scratch);
   return inserted;
 }
 
@@ -123,7 +124,9 @@ size_t smoothing_pass(TetTopology& topo, double target, const std::vector<uint8_
 OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const std::vector<uint8_t>* frozen) {
   Stopwatch clock;
   OptimizeStats stats;
+  Stopwatch part;
   stats.before = measure_quality(mesh);
+  stats.measure_seconds += part.wall();
   if (options.passes > 0 && mesh.num_tets() > 0) {
     PARTET_ASSERT(!frozen || frozen->size() == mesh.num_vertices(), "one frozen flag per vertex");
     TetTopology topo(mesh);
@@ -135,16 +138,24 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     SmoothingScratch scratch;
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;
+      part = Stopwatch();
       const size_t flips = topology_pass(topo, target, stats);
+      stats.topology_seconds += part.wall();
+      part = Stopwatch();
       const size_t inserted = options.insert_vertices ? insertion_pass(topo, target, scratch) : 0;
+      stats.insertion_seconds += part.wall();
+      part = Stopwatch();
       const size_t moved = smoothing_pass(topo, target, fixed, scratch);
+      stats.smoothing_seconds += part.wall();
       stats.vertices_inserted += inserted;
       stats.vertices_moved += moved;
       if (flips == 0 && inserted == 0 && moved == 0) break;
     }
     topo.compact();
   }
+  part = Stopwatch();
   stats.after = options.passes > 0 ? measure_quality(mesh) : stats.before;
+  stats.measure_seconds += part.wall();
   stats.seconds = clock.wall();
   return stats;
 }

@@ -392,6 +392,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         c["tets"] = n.tets;
         c["faces left"] = n.faces_left;
         c["passes"] = n.passes;
+        c["checks"] = n.checks;
         return c;
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
@@ -455,6 +456,10 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
           c["vertices inserted"] = n.vertices_inserted;
           c["vertices moved"] = n.vertices_moved;
           c["passes"] = n.passes;
+          c["topology s"] = n.topology_seconds;
+          c["insertion s"] = n.insertion_seconds;
+          c["smoothing s"] = n.smoothing_seconds;
+          c["measure s"] = n.measure_seconds;
           c["tets"] = s.mesh.num_tets();
           return c;
         });

@@ -48,12 +48,13 @@ TEST(Cli, CubeIsMeshedByTreeSupportedRemovals) {
   EXPECT_EQ(check.exit_code, 0) << check.output;
 }
 
-TEST(Cli, IcosahedronIsClosedByACavityPoint) {
-  std::string dir = scratch_dir("cli_ico");
-  auto r = run_partet(data_path("good/icosahedron.off") + " -o " + dir + "/ico.msh");
+TEST(Cli, WhatTreeSupportedRemovalsLeaveIsClosedTreeless) {
+  // The ellipsoid's front does not close without new vertices (see below).
+  std::string dir = scratch_dir("cli_treeless");
+  auto r = run_partet(data_path("good/ellipsoid.off") + " -o " + dir + "/ell.msh");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(contains(r.output, "face removals (tree-less)")) << r.output;
-  auto check = run_partet("check " + dir + "/ico.msh --surface " + data_path("good/icosahedron.off"));
+  auto check = run_partet("check " + dir + "/ell.msh --surface " + data_path("good/ellipsoid.off"));
   EXPECT_EQ(check.exit_code, 0) << check.output;
 }
 
