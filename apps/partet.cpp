@@ -48,6 +48,11 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_option("--too-close", o.too_close,
                  "Gap kept between the surface and the templated core, in target sizes")
       ->type_name("T")->capture_default_str();
+  std::string partitioner = "mrob";
+  app.add_option("--partitioner", partitioner,
+                 "How the boundary octants are split between ranks: recursive bisection along the coordinate "
+                 "axes in turn (rob), the axis of inertia (rib), or the coordinate axis closest to it (mrob)")
+      ->check(CLI::IsMember({"rob", "rib", "mrob"}))->type_name("METHOD")->capture_default_str();
   std::string stop;
   app.add_option("--stop-after", stop,
                  "Stop after a step, writing what it has: surface (diagnosis only, writes nothing), "
@@ -78,6 +83,8 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   if (int code = parse(app, argc, argv, comm); code >= 0) return code;
   if (no_optimize) o.optimize_passes = 0;
   o.treeless = !no_treeless;
+  if (partitioner == "rob") o.partitioner = partet::BisectionMethod::kRob;
+  if (partitioner == "rib") o.partitioner = partet::BisectionMethod::kRib;
   if (stop == "surface") o.stop_after = partet::StopAfter::kSurface;
   if (stop == "templates") o.stop_after = partet::StopAfter::kTemplates;
   partet::Log log(comm.rank(), o.quiet, o.verbose);

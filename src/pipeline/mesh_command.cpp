@@ -1,7 +1,9 @@
 // run_mesh: the pipeline of DESIGN.md, one report step per stage: read and
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
 // balance), classify leaves, make the interior set manifold (demoting
-// leaves to too close), template the interior, make the initial front.
+// leaves to too close), template the interior, on P > 1 ranks partition
+// the boundary leaves (and gather the tree and core on rank 0, where the
+// later steps run for now), make the initial front.
 // Then tree-supported face removals and, for the faces they leave, face
 // removals with new vertices; a front left after those exits 3 (naming
 // where); --stop-after templates writes the templated core and exits 0.
@@ -31,6 +33,7 @@
 #include "optimize/optimize.hpp"
 #include "parallel/collective_step.hpp"
 #include "parallel/write_parts.hpp"
+#include "pipeline/partition_step.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
 #include "templates/gather_core.hpp"
@@ -59,6 +62,7 @@ ojson options_json(const MeshOptions& o) {
   j["size_factor"] = o.size_factor;
   j["max_level"] = o.max_level;
   j["too_close"] = o.too_close;
+  j["partitioner"] = bisection_name(o.partitioner);
   j["ascii"] = o.ascii;
   if (!o.front_out.empty()) j["front_out"] = o.front_out;
   return j;
@@ -92,6 +96,7 @@ struct MeshState {
   DistributedOctree own;
   LinearOctree view;
   TemplateCore part;
+  BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
   bool whole_on_root = false;
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
@@ -328,11 +333,6 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         c["tets"] = comm.sum(tets);
         c["tets per rank"] = comm.all_gather(tets);
         c["leaves"] = comm.sum(static_cast<int64_t>(s.part.leaves_templated));
-        if (gather) {
-          gather_tree_and_core(comm, s.view, s.part, s.tree, s.core);
-          s.whole_on_root = true;
-          c["vertices"] = s.core.mesh.num_vertices();
-        }
         return c;
       }
       if (!root_rank) return ojson::object();
@@ -344,6 +344,20 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       c["leaves"] = s.core.leaves_templated;
       return c;
     });
+    if (distributed && options.stop_after == StopAfter::kNone) {
+      report.run_step("partition boundary", [&] {
+        return partition_boundary_step(comm, s.view, s.part, s.root, s.surface, options.partitioner, s.boundary);
+      });
+    }
+    if (distributed && gather) {
+      report.run_step("gather on rank 0", [&] {
+        gather_tree_and_core(comm, s.view, s.part, s.tree, s.core);
+        s.whole_on_root = true;
+        ojson c;
+        if (root_rank) c["vertices"] = s.core.mesh.num_vertices();
+        return c;
+      });
+    }
     report.run_step("core quality", [&] {
       // Each rank measures its part (the whole core on one rank).
       const TetMesh& core = distributed ? s.part.mesh : s.core.mesh;

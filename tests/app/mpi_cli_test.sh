@@ -19,6 +19,21 @@ log=$(run "$data/good/cube.off" -o "$out/c.pvtu"); code=$?
 log=$("$partet" check "$out/c.pvtu" --surface "$data/good/cube.off" 2>&1); code=$?
 [[ $code -eq 0 ]] || { echo "the cube mesh is not valid"; echo "$log"; exit 1; }
 
+# Every partitioner of the boundary leaves gives a valid mesh; the report
+# names it and, on several ranks, balances the front faces.
+for method in rib rob; do
+  log=$(run "$data/good/eight.off" -o "$out/e.pvtu" --partitioner "$method" --report "$out/e.json"); code=$?
+  [[ $code -eq 0 ]] || { echo "eight.off --partitioner $method: exit $code"; echo "$log"; exit 1; }
+  log=$("$partet" check "$out/e.pvtu" --surface "$data/good/eight.off" 2>&1); code=$?
+  [[ $code -eq 0 ]] || { echo "eight.off --partitioner $method: the mesh is not valid"; echo "$log"; exit 1; }
+  if [[ $np -gt 1 ]]; then
+    grep -q "\"method\": \"$method\"" "$out/e.json" || { echo "report lacks the partition by $method"; exit 1; }
+    grep -q "\"bytes migrated per rank\"" "$out/e.json" || { echo "report lacks the bytes migrated"; exit 1; }
+  fi
+done
+log=$(run "$data/good/cube.off" -o "$out/c.vtu" --partitioner bogus); code=$?
+[[ $code -eq 2 ]] || { echo "--partitioner bogus: exit $code, expected 2"; echo "$log"; exit 1; }
+
 log=$(run "$data/good/ellipsoid.off" -o "$out/i.vtu" --no-treeless); code=$?
 [[ $code -eq 3 ]] || { echo "ellipsoid.off: exit $code, expected 3"; echo "$log"; exit 1; }
 grep -q "front faces remain, near" <<<"$log" || { echo "exit 3 does not say where"; echo "$log"; exit 1; }

@@ -23,7 +23,8 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_TRUE(contains(v.output, "partet " PARTET_VERSION)) << v.output;
   auto h = run_partet("--help");
   EXPECT_EQ(h.exit_code, 0);
-  for (const char* opt : {"--output", "--report", "--ascii", "--quiet", "--verbose", "check", "mpirun"})
+  for (const char* opt :
+       {"--output", "--report", "--ascii", "--quiet", "--verbose", "--partitioner", "check", "mpirun"})
     EXPECT_TRUE(contains(h.output, opt)) << opt;
   auto ch = run_partet("check --help");
   EXPECT_EQ(ch.exit_code, 0);
@@ -106,7 +107,8 @@ TEST(Cli, StopAfterSurfaceOnlyDiagnoses) {
 TEST(Cli, BadOptionValuesAreInputErrors) {
   std::string in = data_path("good/cube.off") + " -o /tmp/partet_never.vtu ";
   for (const char* bad : {"--size-factor 0", "--size-factor -1", "--max-size 0", "--max-level 0",
-                          "--max-level 21", "--too-close -1", "--stop-after nothing", "--front-out f.xyz"}) {
+                          "--max-level 21", "--too-close -1", "--stop-after nothing", "--front-out f.xyz",
+                          "--partitioner metis"}) {
     auto r = run_partet(in + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.output;
   }
