@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan fuzz bench-steps corpus-check clean
+.PHONY: all deps build demo test test-asan fuzz bench-steps bench bench-large corpus-check clean
 
 all: build
 
@@ -29,6 +29,14 @@ test-asan: deps
 
 bench-steps: build
 	@bench/steps $(BUILD)
+
+# partet against TetGen, Gmsh and Netgen (installed from Debian when missing);
+# BENCH_ARGS passes options, e.g. BENCH_ARGS=--quick (see bench/README.md).
+bench: build
+	@bench/run --build $(BUILD) $(BENCH_ARGS)
+
+bench-large: build
+	@bench/large --build $(BUILD) $(BENCH_ARGS)
 
 corpus-check: build
 	@scripts/corpus-check $(BUILD) $(or $(ROUNDS),3)
