@@ -65,8 +65,9 @@ class TreelessRemover {
   // the ideal apex (above the centroid at the height of the regular tet),
   // else a new vertex there or lower; false when none is valid.
   bool advance_face(uint32_t f);
-  // Deletes the tets behind the faces that do not see q; false when none.
-  bool reopen_blockers(const std::vector<uint32_t>& faces, const double* q);
+  // Deletes the tets behind the faces that do not see q (with `every`,
+  // behind all the faces); false when none.
+  bool reopen_blockers(const std::vector<uint32_t>& faces, const double* q, bool every);
   // Alive faces grouped by edge-connected component: components_ holds the
   // faces, component_first_ the start of each (plus one past the end).
   void find_components();
@@ -179,13 +180,13 @@ size_t TreelessRemover::cone(const std::vector<uint32_t>& faces, const double* q
   return made;
 }
 
-bool TreelessRemover::reopen_blockers(const std::vector<uint32_t>& faces, const double* q) {
+bool TreelessRemover::reopen_blockers(const std::vector<uint32_t>& faces, const double* q, bool every) {
   if (!incidence_) incidence_ = std::make_unique<TetIncidence>(out_);
   incidence_->index_new(out_);
   std::vector<uint32_t> doomed;
   for (uint32_t f : faces) {
     const uint32_t* t = front_.face(f);
-    if (orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) > 0) continue;
+    if (!every && orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), q) > 0) continue;
     const uint32_t tet = incidence_->tet_behind(out_, t[0], t[1], t[2]);
     if (tet == kNoTet) continue;
     const uint32_t* v = &out_.tets[4 * size_t{tet}];
@@ -233,7 +234,12 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
         ++counts_.star_fills;
         return true;
       }
-    if (!kernel.found || growth == kMaxGrowth || !reopen_blockers(faces, kernel.point)) break;
+    // Without a kernel (e.g. a flat cavity between coplanar faces) the
+    // faces that do not see the mean of the vertices are reopened. When
+    // only surface faces block the point, every face with a tet behind it
+    // is reopened: the cavity grows away from the surface.
+    const double* q = kernel.found ? kernel.point : candidates[2];
+    if (growth == kMaxGrowth || !(reopen_blockers(faces, q, false) || reopen_blockers(faces, q, true))) break;
     // The grown component: the one holding an alive face of the old one or
     // a face the deletions added.
     uint32_t seed = kNoIndex;

@@ -44,6 +44,9 @@ namespace partet {
 
 namespace {
 
+// Shape bound (q of face_removal.hpp) of the first tree-supported removals.
+constexpr double kShapedRemovalQuality = 0.05;
+
 const char* stop_name(StopAfter s) {
   switch (s) {
     case StopAfter::kSurface: return "surface";
@@ -401,12 +404,17 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         if (!root_rank) return ojson::object();
         front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
         s.mesh = std::move(s.core.mesh);
-        RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh);
+        // Well-shaped tets first; the nearly flat ones a front may need only
+        // where nothing better was found.
+        RemovalOptions shaped;
+        shaped.min_quality = kShapedRemovalQuality;
+        const RemovalCounts first = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, shaped);
+        const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh);
         ojson c;
-        c["tets"] = n.tets;
+        c["tets"] = first.tets + n.tets;
         c["faces left"] = n.faces_left;
-        c["passes"] = n.passes;
-        c["checks"] = n.checks;
+        c["passes"] = first.passes + n.passes;
+        c["checks"] = first.checks + n.checks;
         return c;
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
