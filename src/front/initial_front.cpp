@@ -1,8 +1,6 @@
 // The initial front (see initial_front.hpp). Exposed core faces come from
-// the face cases of the template, not from matching tet faces: a triangle
-// of an interior leaf's face is exposed when the leaf just across it, at the
-// triangle's quadrant, is not interior (or there is none), which
-// face_rule.hpp shows is exact.
+// the face cases of the template, not from matching tet faces
+// (templates/exposed_faces.hpp).
 #include "front/initial_front.hpp"
 
 #include <algorithm>
@@ -10,8 +8,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "templates/face_rule.hpp"
-#include "templates/leaf_neighbourhood.hpp"
+#include "templates/exposed_faces.hpp"
 
 namespace partet {
 namespace {
@@ -34,32 +31,11 @@ uint32_t grid_cell(double x, double origin, double unit) {
 // Appends the core's exposed faces, oriented away from their tets.
 void add_core_faces(const LinearOctree& tree, const TemplateCore& core,
                     std::vector<uint32_t>& faces) {
-  const uint32_t* tets = core.mesh.tets.data();
   for (size_t i = 0; i < tree.size(); ++i) {
     if (tree.cls[i] != LeafClass::kInterior) continue;
-    uint64_t tet = core.leaf_first_tet[i];
-    for (int f = 0; f < kLeafFaces; ++f) {
-      const FaceTriangulation& t = face_triangulation(f, core.face_case[kLeafFaces * i + f]);
-      // Across quadrant 0: a neighbour of this leaf's size or larger covers
-      // the whole face.
-      uint32_t across[4];
-      across[0] = leaf_across(tree, i, f, 0);
-      const bool one_neighbour = across[0] == kAbsentLeaf || tree.level[across[0]] <= tree.level[i];
-      for (int q = 1; q < 4; ++q)
-        across[q] = one_neighbour ? across[0] : leaf_across(tree, i, f, q);
-      if (one_neighbour && across[0] != kAbsentLeaf &&
-          tree.cls[across[0]] == LeafClass::kInterior) {
-        tet += t.count;
-        continue;
-      }
-      for (int k = 0; k < t.count; ++k, ++tet) {
-        const uint32_t other = across[t.tri[k].quadrant];
-        if (other != kAbsentLeaf && tree.cls[other] == LeafClass::kInterior) continue;
-        // The tet is (a, c, b, centre) for the outward triangle (a, b, c).
-        const uint32_t* v = tets + 4 * tet;
-        faces.insert(faces.end(), {v[0], v[2], v[1]});
-      }
-    }
+    for_each_exposed_face(tree, core, i, [&](uint32_t, const uint32_t* v) {
+      faces.insert(faces.end(), {v[0], v[2], v[1]});
+    });
   }
 }
 

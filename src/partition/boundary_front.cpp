@@ -9,8 +9,7 @@
 #include "core/error.hpp"
 #include "core/expansion.hpp"
 #include "front/initial_front.hpp"
-#include "templates/face_rule.hpp"
-#include "templates/leaf_neighbourhood.hpp"
+#include "templates/exposed_faces.hpp"
 
 namespace partet {
 namespace {
@@ -42,32 +41,18 @@ struct Made {
 };
 
 // The exposed triangles of this rank's interior leaves, each given to the
-// leaf across it. Exposure is decided as add_core_faces in initial_front.cpp
-// decides it (tests/mpi/test_boundary_partition.cpp checks that the ranks'
-// faces together are make_initial_front's).
+// leaf across it (templates/exposed_faces.hpp, as make_initial_front).
 void add_core_faces(const LinearOctree& view, const TemplateCore& core, int rank, Made& made) {
-  const uint32_t* tets = core.mesh.tets.data();
   for (size_t i = 0; i < view.size(); ++i) {
     if (view.owner[i] != rank || view.cls[i] != LeafClass::kInterior) continue;
-    uint64_t tet = core.leaf_first_tet[i];
-    for (int f = 0; f < kLeafFaces; ++f) {
-      const FaceTriangulation& t = face_triangulation(f, core.face_case[kLeafFaces * i + f]);
-      uint32_t across[4];
-      across[0] = leaf_across(view, i, f, 0);
-      const bool one_neighbour = across[0] == kAbsentLeaf || view.level[across[0]] <= view.level[i];
-      for (int q = 1; q < 4; ++q) across[q] = one_neighbour ? across[0] : leaf_across(view, i, f, q);
-      for (int k = 0; k < t.count; ++k, ++tet) {
-        const uint32_t other = across[t.tri[k].quadrant];
-        PARTET_ASSERT(other != kAbsentLeaf, "an interior leaf touches the root cube's boundary");
-        if (view.cls[other] == LeafClass::kInterior) continue;
-        PARTET_ASSERT(front_leaf_class(view.cls[other]) && view.owner[other] >= 0,
-                      "a core face lies against a leaf that is neither boundary nor too close, or unknown here");
-        const uint32_t* v = tets + 4 * tet;
-        made.batch.leaf_key.push_back(view.key[other]);
-        made.batch.faces.insert(made.batch.faces.end(), {v[0], v[2], v[1]});
-        made.destination.push_back(view.owner[other]);
-      }
-    }
+    for_each_exposed_face(view, core, i, [&](uint32_t other, const uint32_t* v) {
+      PARTET_ASSERT(other != kAbsentLeaf, "an interior leaf touches the root cube's boundary");
+      PARTET_ASSERT(front_leaf_class(view.cls[other]) && view.owner[other] >= 0,
+                    "a core face lies against a leaf that is neither boundary nor too close, or unknown here");
+      made.batch.leaf_key.push_back(view.key[other]);
+      made.batch.faces.insert(made.batch.faces.end(), {v[0], v[2], v[1]});
+      made.destination.push_back(view.owner[other]);
+    });
   }
 }
 
