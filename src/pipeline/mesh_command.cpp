@@ -32,6 +32,7 @@
 #include "octree/sizing.hpp"
 #include "optimize/optimize.hpp"
 #include "parallel/collective_step.hpp"
+#include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/report.hpp"
@@ -99,6 +100,7 @@ struct MeshState {
   DistributedOctree own;
   LinearOctree view;
   TemplateCore part;
+  VertexLinks links;  // copies of this rank's template vertices on other ranks
   BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
   bool whole_on_root = false;
   InitialFront initial_front;
@@ -336,6 +338,8 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         c["tets"] = comm.sum(tets);
         c["tets per rank"] = comm.all_gather(tets);
         c["leaves"] = comm.sum(static_cast<int64_t>(s.part.leaves_templated));
+        s.links = link_shared_vertices(comm, s.part.mesh.global_ids);
+        c["shared vertices per rank"] = comm.all_gather(static_cast<int64_t>(s.links.num_shared()));
         return c;
       }
       if (!root_rank) return ojson::object();

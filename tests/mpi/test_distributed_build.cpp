@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "octree/neighbours.hpp"
 #include "octree/sizing.hpp"
 #include "parallel/comm.hpp"
+#include "parallel/vertex_links.hpp"
 #include "surface/diagnose.hpp"
 #include "templates/gather_core.hpp"
 #include "templates/manifold_core.hpp"
@@ -128,6 +130,49 @@ bool unbalanced_pair(const LinearOctree& t) {
   return false;
 }
 
+std::string bytes_of(const void* data, size_t n) { return std::string(static_cast<const char*>(data), n); }
+
+template <class T>
+std::vector<T> values_of(const std::string& bytes) {
+  std::vector<T> out(bytes.size() / sizeof(T));
+  if (!out.empty()) std::memcpy(out.data(), bytes.data(), bytes.size());
+  return out;
+}
+
+// The links of every rank's template vertices are exactly the other ranks'
+// copies of the same global id (checked on rank 0 from all ranks' ids).
+void expect_linked(const Comm& comm, const std::vector<uint64_t>& ids, const std::string& label) {
+  const VertexLinks links = link_shared_vertices(comm, ids);
+  ASSERT_EQ(links.num_vertices(), ids.size()) << label;
+  std::vector<uint64_t> flat;  // per vertex: count, then (rank, index) pairs
+  for (size_t v = 0; v < ids.size(); ++v) {
+    flat.push_back(links.first[v + 1] - links.first[v]);
+    for (uint32_t e = links.first[v]; e < links.first[v + 1]; ++e) {
+      flat.push_back(static_cast<uint64_t>(links.rank[e]));
+      flat.push_back(links.index[e]);
+    }
+  }
+  const auto all_ids = comm.gather(bytes_of(ids.data(), ids.size() * sizeof(uint64_t)), 0);
+  const auto all_links = comm.gather(bytes_of(flat.data(), flat.size() * sizeof(uint64_t)), 0);
+  if (comm.rank() != 0) return;
+  std::map<uint64_t, std::vector<std::pair<uint64_t, uint64_t>>> where;  // id -> (rank, index)
+  for (size_t r = 0; r < all_ids.size(); ++r) {
+    const std::vector<uint64_t> rank_ids = values_of<uint64_t>(all_ids[r]);
+    for (size_t v = 0; v < rank_ids.size(); ++v) where[rank_ids[v]].emplace_back(r, v);
+  }
+  for (size_t r = 0; r < all_ids.size(); ++r) {
+    const std::vector<uint64_t> rank_ids = values_of<uint64_t>(all_ids[r]);
+    std::vector<uint64_t> expected;
+    for (size_t v = 0; v < rank_ids.size(); ++v) {
+      const auto& copies = where[rank_ids[v]];
+      expected.push_back(copies.size() - 1);
+      for (const auto& [rank, index] : copies)
+        if (rank != r) expected.insert(expected.end(), {rank, index});
+    }
+    EXPECT_TRUE(values_of<uint64_t>(all_links[r]) == expected) << label << ": links of rank " << r;
+  }
+}
+
 struct Serial {
   LinearOctree built, refined, balanced, classified, manifold;
   size_t demoted = 0;
@@ -183,6 +228,7 @@ size_t check_distributed(const Comm& comm, const Input& in, bool all_on_last) {
   expect_same_leaves(all_leaves(comm, view), s.manifold, label + ": manifold core", true);
 
   const TemplateCore part = template_interior(view, in.root, comm.rank());
+  expect_linked(comm, part.mesh.global_ids, label);
   if (part.mesh.num_tets() > 0) {
     const ValidationResult v = validate_mesh(part.mesh, nullptr);
     EXPECT_TRUE(v.valid) << label << ": the piece of rank " << comm.rank() << " is not valid";
