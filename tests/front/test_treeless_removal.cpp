@@ -25,6 +25,7 @@
 #include "octree/classify.hpp"
 #include "octree/sizing.hpp"
 #include "surface/diagnose.hpp"
+#include "surface/midpoint_refine.hpp"
 #include "templates/manifold_core.hpp"
 #include "templates/template_mesh.hpp"
 #include "test_support.hpp"
@@ -107,6 +108,17 @@ TEST(FrontTreeless, EveryDataSurfaceCloses) {
         "good/octahedron.off", "good/part.off", "good/pipe.off", "good/sphere966.off", "good/spool.off",
         "good/star.off", "good/tripod.off", "good/u.off", "fixable/blobby-shuffled.off", "fixable/tet-shuffled.off"})
     EXPECT_EQ(mesh_file(name).faces_left, 0u) << name;
+}
+
+// Refined once, part has flat cavities between exactly coplanar surface
+// triangles and the tets above them: they close only when the tets behind
+// all the cavity's non-surface faces are reopened (they cycled before).
+TEST(FrontTreeless, RefinedSurfacesClose) {
+  for (const char* name : {"good/part.off", "good/joint.off"}) {
+    const Meshed r = mesh_surface(refine_midpoints(read_surface_file(data_path(name))), std::string(name) + " r1");
+    EXPECT_EQ(r.faces_left, 0u) << name;
+    EXPECT_LT(r.counts.rounds, 50u) << name;
+  }
 }
 
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
