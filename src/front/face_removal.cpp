@@ -62,6 +62,9 @@ class Remover {
   bool neighbourhood_changed_since(uint64_t stamp) const;
   bool neighbourhood_foreign() const;
   void make_tet(uint32_t f, uint32_t p);
+  // closers_ = the third vertex of every other alive face along an edge of
+  // face f: a target closes one face for each time it appears there.
+  void find_closers(uint32_t f);
   // near_ = the front over the leaves that meet the tet's bounding box.
   void gather_around_tet(const double* pa, const double* pb, const double* pc, const double* pp);
 
@@ -89,6 +92,7 @@ class Remover {
   std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
   NearFront near_;
   std::vector<Target> targets_;
+  std::vector<uint32_t> closers_;
   std::vector<uint32_t> added_, shrunk_;
 };
 
@@ -153,6 +157,7 @@ bool Remover::try_face(uint32_t f, bool full) {
   const uint32_t a = t[0], b = t[1], c = t[2];
   const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
   targets_.clear();
+  find_closers(f);
   for (size_t leaf : leaves_)
     for (uint32_t v = front_.first_vertex(leaf); v != kNoIndex; v = front_.next_vertex(v)) {
       if (v == a || v == b || v == c) continue;
@@ -162,8 +167,7 @@ bool Remover::try_face(uint32_t f, bool full) {
       if (!inside || orient3d(pa, pb, pc, q) <= 0) continue;
       const double shape = shape_measure(pa, pb, pc, q);
       if (shape < options_.min_quality) continue;
-      const int closed = (front_.find_face(b, c, v) != kNoIndex) + (front_.find_face(a, v, c) != kNoIndex) +
-                         (front_.find_face(a, b, v) != kNoIndex);
+      const int closed = static_cast<int>(std::count(closers_.begin(), closers_.end(), v));
       targets_.push_back({shape * (1 + closed), v});
     }
   std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {
@@ -187,6 +191,30 @@ bool Remover::try_face(uint32_t f, bool full) {
     }
   }
   return false;
+}
+
+void Remover::find_closers(uint32_t f) {
+  // A face containing vertex u is listed in the leaf holding u (it meets
+  // that leaf's closed box), so the faces along a base edge are found there.
+  const uint32_t* t = front_.face(f);
+  closers_.clear();
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t u = t[k], w = t[(k + 1) % 3];
+    for (uint32_t e = front_.first_face_entry(front_.vertex_leaf(u)); e != kNoIndex; e = front_.next_entry(e)) {
+      const uint32_t g = front_.entry_face(e);
+      if (g == f) continue;
+      const uint32_t* h = front_.face(g);
+      int shared = 0;
+      uint32_t third = kNoIndex;
+      for (int i = 0; i < 3; ++i) {
+        if (h[i] == u || h[i] == w)
+          ++shared;
+        else
+          third = h[i];
+      }
+      if (shared == 2) closers_.push_back(third);
+    }
+  }
 }
 
 void Remover::gather_around_tet(const double* pa, const double* pb, const double* pc, const double* pp) {
