@@ -71,8 +71,10 @@ class TreelessRemover {
   // Alive faces grouped by edge-connected component: components_ holds the
   // faces, component_first_ the start of each (plus one past the end).
   void find_components();
-  // The component (after find_components) holding face f.
-  std::vector<uint32_t> component_of(uint32_t f) const;
+  // The component holding alive face f, in face index order, found by a
+  // breadth-first walk across edges (the faces along an edge are listed in
+  // the leaf of either endpoint); the walk stops past `limit` faces.
+  std::vector<uint32_t> component_of(uint32_t f, size_t limit);
 
   Front& front_;
   LinearOctree& tree_;
@@ -90,7 +92,8 @@ class TreelessRemover {
   std::vector<uint32_t> added_, shrunk_;
   std::vector<uint32_t> components_;
   std::vector<size_t> component_first_;
-  std::vector<uint32_t> component_index_;  // per face slot (alive faces)
+  std::vector<uint32_t> walk_mark_;  // per face slot: the walk that last reached it
+  uint32_t walk_ = 0;
 };
 
 void TreelessRemover::tree_pass() {
@@ -248,8 +251,7 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
     for (uint32_t f : added_)
       if (seed == kNoIndex && front_.alive(f)) seed = f;
     if (seed == kNoIndex) return true;  // the deletions closed it
-    find_components();
-    faces = component_of(seed);
+    faces = component_of(seed, kMaxGrownFaces + 1);
   }
   if (kernel.found && cone(faces, kernel.point) > 0) {
     ++counts_.partial_cones;
@@ -410,19 +412,38 @@ void TreelessRemover::find_components() {
   std::sort(by_root.begin(), by_root.end());
   components_.clear();
   component_first_.clear();
-  component_index_.assign(front_.num_face_slots(), kNoIndex);
   for (size_t i = 0; i < by_root.size(); ++i) {
     if (i == 0 || by_root[i].first != by_root[i - 1].first) component_first_.push_back(i);
     components_.push_back(by_root[i].second);
-    component_index_[by_root[i].second] = static_cast<uint32_t>(component_first_.size() - 1);
   }
   component_first_.push_back(components_.size());
 }
 
-std::vector<uint32_t> TreelessRemover::component_of(uint32_t f) const {
-  const uint32_t c = component_index_[f];
-  return std::vector<uint32_t>(components_.begin() + static_cast<ptrdiff_t>(component_first_[c]),
-                               components_.begin() + static_cast<ptrdiff_t>(component_first_[c + 1]));
+std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
+  if (walk_mark_.size() < front_.num_face_slots()) walk_mark_.resize(front_.num_face_slots(), 0);
+  if (++walk_ == 0) {
+    std::fill(walk_mark_.begin(), walk_mark_.end(), 0);
+    walk_ = 1;
+  }
+  std::vector<uint32_t> faces = {f};
+  walk_mark_[f] = walk_;
+  for (size_t head = 0; head < faces.size() && faces.size() <= limit; ++head) {
+    const uint32_t* t = front_.face(faces[head]);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t u = t[k], w = t[(k + 1) % 3];
+      for (uint32_t e = front_.first_face_entry(front_.vertex_leaf(u)); e != kNoIndex; e = front_.next_entry(e)) {
+        const uint32_t g = front_.entry_face(e);
+        if (walk_mark_[g] == walk_) continue;
+        const uint32_t* h = front_.face(g);
+        const bool has_u = h[0] == u || h[1] == u || h[2] == u, has_w = h[0] == w || h[1] == w || h[2] == w;
+        if (!has_u || !has_w) continue;
+        walk_mark_[g] = walk_;
+        faces.push_back(g);
+      }
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
 }
 
 TreelessCounts TreelessRemover::run() {
