@@ -194,26 +194,16 @@ bool Remover::try_face(uint32_t f, bool full) {
 }
 
 void Remover::find_closers(uint32_t f) {
-  // A face containing vertex u is listed in the leaf holding u (it meets
-  // that leaf's closed box), so the faces along a base edge are found there.
   const uint32_t* t = front_.face(f);
   closers_.clear();
   for (int k = 0; k < 3; ++k) {
     const uint32_t u = t[k], w = t[(k + 1) % 3];
-    for (uint32_t e = front_.first_face_entry(front_.vertex_leaf(u)); e != kNoIndex; e = front_.next_entry(e)) {
-      const uint32_t g = front_.entry_face(e);
-      if (g == f) continue;
+    front_.for_each_face_on_edge(u, w, [&](uint32_t g) {
+      if (g == f) return;
       const uint32_t* h = front_.face(g);
-      int shared = 0;
-      uint32_t third = kNoIndex;
-      for (int i = 0; i < 3; ++i) {
-        if (h[i] == u || h[i] == w)
-          ++shared;
-        else
-          third = h[i];
-      }
-      if (shared == 2) closers_.push_back(third);
-    }
+      for (int i = 0; i < 3; ++i)
+        if (h[i] != u && h[i] != w) closers_.push_back(h[i]);
+    });
   }
 }
 

@@ -71,6 +71,18 @@ class Front {
   uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
   // Number of alive faces using edge {a, b} (0: not a front edge).
   uint32_t edge_uses(uint32_t a, uint32_t b) const;
+  // Calls visit(g) for every alive face g with vertices u and w (u != w), in
+  // leaf list order: a face containing u meets the closed box of the leaf
+  // holding u, so it is listed there.
+  template <class Visit>
+  void for_each_face_on_edge(uint32_t u, uint32_t w, Visit&& visit) const {
+    for (uint32_t e = first_face_entry(vertex_leaf(u)); e != kNoIndex; e = next_entry(e)) {
+      const uint32_t g = entry_face(e);
+      const uint32_t* h = face(g);
+      const bool has_u = h[0] == u || h[1] == u || h[2] == u, has_w = h[0] == w || h[1] == w || h[2] == w;
+      if (has_u && has_w) visit(g);
+    }
+  }
 
   // Leaf index. Faces listed in `leaf`: first_face_entry, then next_entry
   // until kNoIndex; entry_face gives the face. Front vertices in `leaf`:

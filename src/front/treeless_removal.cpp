@@ -72,8 +72,8 @@ class TreelessRemover {
   // faces, component_first_ the start of each (plus one past the end).
   void find_components();
   // The component holding alive face f, in face index order, found by a
-  // breadth-first walk across edges (the faces along an edge are listed in
-  // the leaf of either endpoint); the walk stops past `limit` faces.
+  // breadth-first walk across edges (Front::for_each_face_on_edge); the
+  // walk stops past `limit` faces.
   std::vector<uint32_t> component_of(uint32_t f, size_t limit);
 
   Front& front_;
@@ -430,16 +430,11 @@ std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
   for (size_t head = 0; head < faces.size() && faces.size() <= limit; ++head) {
     const uint32_t* t = front_.face(faces[head]);
     for (int k = 0; k < 3; ++k) {
-      const uint32_t u = t[k], w = t[(k + 1) % 3];
-      for (uint32_t e = front_.first_face_entry(front_.vertex_leaf(u)); e != kNoIndex; e = front_.next_entry(e)) {
-        const uint32_t g = front_.entry_face(e);
-        if (walk_mark_[g] == walk_) continue;
-        const uint32_t* h = front_.face(g);
-        const bool has_u = h[0] == u || h[1] == u || h[2] == u, has_w = h[0] == w || h[1] == w || h[2] == w;
-        if (!has_u || !has_w) continue;
+      front_.for_each_face_on_edge(t[k], t[(k + 1) % 3], [&](uint32_t g) {
+        if (walk_mark_[g] == walk_) return;
         walk_mark_[g] = walk_;
         faces.push_back(g);
-      }
+      });
     }
   }
   std::sort(faces.begin(), faces.end());
