@@ -49,8 +49,9 @@ double shape_measure(const double* a, const double* b, const double* c, const do
 // Everything one call keeps between faces.
 class Remover {
  public:
-  Remover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
-      : front_(front), tree_(tree), root_(root), out_(out), options_(options) {}
+  Remover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options,
+          RemovalMemo& memo)
+      : front_(front), tree_(tree), root_(root), out_(out), options_(options), memo_(memo) {}
 
   RemovalCounts run(const std::vector<uint32_t>* seeds);
 
@@ -73,6 +74,7 @@ class Remover {
   const RootCube& root_;
   TetMesh& out_;
   const RemovalOptions& options_;
+  RemovalMemo& memo_;
   RemovalCounts counts_;
 
   // Min-heap of (size, face): the smallest faces are removed first.
@@ -83,9 +85,6 @@ class Remover {
   };
   std::vector<Queued> queue_;
   void push(uint32_t f);
-  // Per face slot: the change counter at its last failure in a capped pass
-  // (a full failure counts as one too) and in a full pass.
-  std::vector<uint64_t> failed_capped_at_, failed_full_at_;
   std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
   double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
   std::vector<size_t> leaves_;      // over the neighbourhood box: where targets come from
@@ -139,8 +138,8 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_);
   ++counts_.tets;
   for (uint32_t g : added_) push(g);
-  failed_capped_at_.resize(front_.num_face_slots(), kNeverFailed);
-  failed_full_at_.resize(front_.num_face_slots(), kNeverFailed);
+  memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
+  memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
 }
 
@@ -226,8 +225,13 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   out_.xyz.insert(out_.xyz.end(), front_.xyz().begin() + 3 * have, front_.xyz().end());
   if (ids) out_.global_ids.insert(out_.global_ids.end(), front_.global_ids().begin() + have, front_.global_ids().end());
 
-  failed_capped_at_.assign(front_.num_face_slots(), kNeverFailed);
-  failed_full_at_.assign(front_.num_face_slots(), kNeverFailed);
+  if (memo_.min_quality != options_.min_quality) {
+    memo_.min_quality = options_.min_quality;
+    memo_.failed_capped_at.clear();
+    memo_.failed_full_at.clear();
+  }
+  memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
+  memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
   if (seeds) {
     for (uint32_t f : *seeds)
@@ -252,14 +256,14 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
         foreign_[f] = 1;
         continue;
       }
-      std::vector<uint64_t>& failed_at = full ? failed_full_at_ : failed_capped_at_;
+      std::vector<uint64_t>& failed_at = full ? memo_.failed_full_at : memo_.failed_capped_at;
       if (failed_at[f] != kNeverFailed && !neighbourhood_changed_since(failed_at[f])) {
         waiting.push_back(f);
         continue;
       }
       if (!try_face(f, full)) {
-        failed_capped_at_[f] = front_.changes();
-        if (full) failed_full_at_[f] = front_.changes();
+        memo_.failed_capped_at[f] = front_.changes();
+        if (full) memo_.failed_full_at[f] = front_.changes();
         waiting.push_back(f);
       }
     }
@@ -297,9 +301,11 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
 }
 
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                          const RemovalOptions& options, const std::vector<uint32_t>* seeds) {
+                                          const RemovalOptions& options, const std::vector<uint32_t>* seeds,
+                                          RemovalMemo* memo) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
-  return Remover(front, tree, root, out, options).run(seeds);
+  RemovalMemo own;
+  return Remover(front, tree, root, out, options, memo ? *memo : own).run(seeds);
 }
 
 }  // namespace partet

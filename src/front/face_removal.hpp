@@ -28,8 +28,8 @@
 // its best few targets; a face that finds no valid one waits for the next
 // pass, and is retried there only when one of its neighbourhood leaves
 // changed since it failed (its answer depends on nothing else). A capped
-// pass that makes no tet is followed by a full pass, where faces try every
-// target; a full pass that makes no tet ends the call. Termination: every
+// pass that makes few tets is followed by a full pass, where faces try
+// every target; a full pass that makes few tets ends the call. Termination: every
 // tet has positive volume inside the unmeshed region and the tets made are
 // interior-disjoint tets on a fixed finite vertex set, so a call makes
 // finitely many tets, and every other pass makes at least one.
@@ -51,6 +51,18 @@ struct RemovalOptions {
   double reach = 1.0;       // neighbourhood half-size in longest base edges
   double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
+};
+
+// What earlier calls learnt: per face slot, the front's change counter when
+// the face last failed a capped pass (a full failure counts as one too) and
+// a full pass, under `min_quality`. A face whose neighbourhood leaves have
+// not changed since is not retried (its answer depends on nothing else), so
+// a call after a local change costs what changed, not the whole front.
+// Valid for one front and one set of RemovalOptions; a call with another
+// min_quality starts it afresh.
+struct RemovalMemo {
+  double min_quality = 0;
+  std::vector<uint64_t> failed_capped_at, failed_full_at;
 };
 
 struct RemovalCounts {
@@ -75,8 +87,11 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
 //
 // With `seeds`, the queue starts with those faces (the alive ones, in the
 // given order) instead of every alive face: a local pass after a change.
+// With `memo`, failures recorded by earlier calls on the same front are
+// used and this call's are added.
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root,
                                           TetMesh& out, const RemovalOptions& options = {},
-                                          const std::vector<uint32_t>* seeds = nullptr);
+                                          const std::vector<uint32_t>* seeds = nullptr,
+                                          RemovalMemo* memo = nullptr);
 
 }  // namespace partet

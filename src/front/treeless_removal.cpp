@@ -34,8 +34,9 @@ constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, lar
 
 class TreelessRemover {
  public:
-  TreelessRemover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options)
-      : front_(front), tree_(tree), root_(root), out_(out), options_(options) {}
+  TreelessRemover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options,
+                  RemovalMemo& memo)
+      : front_(front), tree_(tree), root_(root), out_(out), options_(options), memo_(memo) {}
 
   TreelessCounts run();
 
@@ -81,6 +82,7 @@ class TreelessRemover {
   const RootCube& root_;
   TetMesh& out_;
   const RemovalOptions& options_;
+  RemovalMemo& memo_;
   TreelessCounts counts_;
   bool ids_ = false;
   size_t vertex_budget_ = 0;
@@ -97,14 +99,14 @@ class TreelessRemover {
 };
 
 void TreelessRemover::tree_pass() {
-  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_);
+  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_, nullptr, &memo_);
   counts_.tree_tets += n.tets;
   counts_.checks += n.checks;
   counts_.foreign_faces = n.foreign_faces;
 }
 
 void TreelessRemover::local_tree_pass(const std::vector<uint32_t>& seeds) {
-  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_, &seeds);
+  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options_, &seeds, &memo_);
   counts_.tree_tets += n.tets;
   counts_.checks += n.checks;
 }
@@ -496,9 +498,10 @@ TreelessCounts TreelessRemover::run() {
 }  // namespace
 
 TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                     const RemovalOptions& options) {
+                                     const RemovalOptions& options, RemovalMemo* memo) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
-  return TreelessRemover(front, tree, root, out, options).run();
+  RemovalMemo own;
+  return TreelessRemover(front, tree, root, out, options, memo ? *memo : own).run();
 }
 
 }  // namespace partet

@@ -85,8 +85,10 @@ struct TreelessCounts {
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`
 // and `out`: new vertices are appended to the front and to `out` (with
-// global ids when `out` has them).
+// global ids when `out` has them). `memo` carries the tree-supported
+// removals' failures from an earlier call on the same front and options
+// into the tree-supported runs inside (face_removal.hpp).
 TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
-                                     const RemovalOptions& options = {});
+                                     const RemovalOptions& options = {}, RemovalMemo* memo = nullptr);
 
 }  // namespace partet

@@ -404,16 +404,18 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     } else {
       SurfaceMesh left;
       std::unique_ptr<Front> front;
+      RemovalMemo memo;
       report.run_step("face removals (tree)", [&] {
         if (!root_rank) return ojson::object();
         front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
         s.mesh = std::move(s.core.mesh);
-        // Well-shaped tets first; the nearly flat ones a front may need only
-        // where nothing better was found.
+        // Well-shaped tets first (the best few targets of each face); the
+        // nearly flat ones a front may need only where nothing better was
+        // found.
         RemovalOptions shaped;
         shaped.min_quality = kShapedRemovalQuality;
         const RemovalCounts first = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, shaped);
-        const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh);
+        const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, {}, nullptr, &memo);
         ojson c;
         c["tets"] = first.tets + n.tets;
         c["faces left"] = n.faces_left;
@@ -424,7 +426,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         report.run_step("face removals (tree-less)", [&] {
           if (!root_rank) return ojson::object();
-          TreelessCounts n = remove_faces_treeless(*front, s.tree, s.root, s.mesh);
+          TreelessCounts n = remove_faces_treeless(*front, s.tree, s.root, s.mesh, {}, &memo);
           ojson c;
           c["tets (tree-supported)"] = n.tree_tets;
           c["tets (new vertices)"] = n.new_vertex_tets;

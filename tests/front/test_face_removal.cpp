@@ -3,7 +3,8 @@
 // cube close completely; on the corpus shapes the core plus the new tets
 // is always a valid partial mesh (and fills the surface when the front is
 // empty); faces near leaves owned by another rank wait, and a later call
-// with the leaves back on this rank continues the same front.
+// with the leaves back on this rank continues the same front; a memo of
+// failures spares a later call the faces whose neighbourhood is unchanged.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -152,6 +153,36 @@ TEST(FrontRemoval, ForeignLeavesWait) {
   EXPECT_EQ(more.foreign_faces, 0u);
   EXPECT_LT(more.faces_left, n.faces_left);
   expect_valid(m, out, more.faces_left, "all owned");
+}
+
+TEST(FrontRemoval, MemoSkipsUnchangedNeighbourhoods) {
+  size_t stuck_inputs = 0;
+  for (const char* name : {"joint.off", "pipe.off", "spool.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    RemovalMemo memo;
+    const RemovalCounts first = remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
+    if (first.faces_left == 0) continue;
+    ++stuck_inputs;
+    // Nothing changed since every face left failed: with the memo no face
+    // is tried; without it every face is, and fails again.
+    const RemovalCounts again = remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
+    EXPECT_EQ(again.checks, 0u) << name;
+    EXPECT_EQ(again.tets, 0u) << name;
+    const RemovalCounts fresh = remove_faces_tree_supported(front, m.tree, m.root, out);
+    EXPECT_GT(fresh.checks, 0u) << name;
+    EXPECT_EQ(fresh.tets, 0u) << name;
+    // Another min_quality is another question: the memo starts afresh.
+    RemovalOptions shaped;
+    shaped.min_quality = 0.05;
+    const RemovalCounts other = remove_faces_tree_supported(front, m.tree, m.root, out, shaped, nullptr, &memo);
+    EXPECT_GT(other.checks, 0u) << name;
+    EXPECT_EQ(memo.min_quality, 0.05) << name;
+    expect_valid(m, out, again.faces_left, name);
+  }
+  EXPECT_GT(stuck_inputs, 0u) << "no input left faces to retry";
 }
 
 }  // namespace
