@@ -31,7 +31,7 @@ void for_each_exposed_face(const LinearOctree& tree, const TemplateCore& core, s
     across[0] = leaf_across(tree, i, f, 0);
     const bool one_neighbour = across[0] == kAbsentLeaf || tree.level[across[0]] <= tree.level[i];
     if (one_neighbour && across[0] != kAbsentLeaf && tree.cls[across[0]] == LeafClass::kInterior) {
-      tet += t.count;
+      tet += face_tets(tree, i, f, core.face_case[kLeafFaces * i + f]);
       continue;
     }
     for (int q = 1; q < 4; ++q) across[q] = one_neighbour ? across[0] : leaf_across(tree, i, f, q);

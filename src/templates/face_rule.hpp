@@ -18,7 +18,10 @@
 //  - diagonal: otherwise F is split into two triangles by the diagonal that
 //    joins its (even, even) corner to its (odd, odd) corner, coordinates in
 //    units of F's own edge (exactly one corner of F is (even, even)).
-// Every face triangle is coned to the leaf centre (template_mesh.hpp).
+// Every face triangle is coned to the leaf centre, unless the face is
+// paired with an interior leaf of the same level: then the face's boundary
+// polygon is split around the axis between the two centres
+// (template_mesh.hpp).
 //
 // Why this conforms in a tree 2:1 balanced across faces and edges (leaves
 // sharing part of a face or of an edge differ by at most one level):

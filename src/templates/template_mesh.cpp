@@ -36,6 +36,24 @@ constexpr std::array<uint8_t, kFacePointCount> face_points() {
 }
 constexpr std::array<uint8_t, kFacePointCount> kFacePoints = face_points();
 
+// The boundary polygon of face f in case c, counterclockwise about +axis
+// from in-face corner (0, 0): the corners and, in a fanned case, the
+// midpoints on the fan's boundary. Writes the leaf points to `points` (8
+// at most) when given; returns their number.
+int polygon_points(int f, int c, int* points) {
+  constexpr int kCornerU[4] = {0, 2, 2, 0}, kCornerV[4] = {0, 0, 2, 2};
+  int n = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (points) points[n] = face_point(f, kCornerU[k], kCornerV[k]);
+    ++n;
+    if (c < kDiagonalCase && (c >> k & 1)) {
+      if (points) points[n] = face_midpoint(f, k);
+      ++n;
+    }
+  }
+  return n;
+}
+
 // The interior leaves whose corners are in V: all of them, or with a part
 // those with an owner (own and layer-1 leaves of a local view).
 std::vector<uint32_t> interior_leaves(const LinearOctree& tree, int32_t part) {
@@ -73,11 +91,17 @@ std::vector<uint8_t> mark_corners(const LinearOctree& tree, const std::vector<ui
   return in_v;
 }
 
+}  // namespace
+
+uint32_t face_tets(const LinearOctree& tree, size_t i, int f, int face_case);
+
+namespace {
+
 // Pass 2 for the current leaf of `around`: its face cases, and the vertices
 // its tets use marked in `vertex_mask` (its corners, the midpoints in V and
 // centres of its fanned faces, its centre). Returns its tet count.
-uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<uint8_t>& in_v,
-                           std::vector<uint8_t>& vertex_mask, uint8_t* cases) {
+uint32_t choose_face_cases(const LinearOctree& tree, const LeafNeighbourhood& around,
+                           const std::vector<uint8_t>& in_v, std::vector<uint8_t>& vertex_mask, uint8_t* cases) {
   uint32_t present = 0;  // bit p: leaf point p is in V
   PointHome homes[kLeafPoints];
   for (int c = 0; c < 8; ++c) {
@@ -94,6 +118,7 @@ uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<ui
     uint32_t midpoints = 0;
     for (int k = 0; k < 4; ++k) midpoints |= (present >> face_midpoint(f, k) & 1u) << k;
     const int centre = face_centre(f);
+    const uint32_t twin = paired_leaf(tree, around.leaf(), f);
     int c;
     if (midpoints != 0 || (present >> centre & 1)) {
       c = static_cast<int>(midpoints);
@@ -101,7 +126,7 @@ uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<ui
       PARTET_ASSERT(h.leaf != kAbsentLeaf, "fanned face " + std::to_string(f) + " of leaf " +
                                                std::to_string(around.leaf()) +
                                                " has its centre off its home's lattice");
-      vertex_mask[h.leaf] |= static_cast<uint8_t>(1u << h.child);
+      if (twin == kAbsentLeaf) vertex_mask[h.leaf] |= static_cast<uint8_t>(1u << h.child);
       for (int k = 0; k < 4; ++k) {
         const PointHome m = homes[face_midpoint(f, k)];
         if (c >> k & 1) vertex_mask[m.leaf] |= static_cast<uint8_t>(1u << m.child);
@@ -110,7 +135,9 @@ uint32_t choose_face_cases(const LeafNeighbourhood& around, const std::vector<ui
       c = diagonal_case(f, around.anchor(), around.edge());
     }
     cases[f] = static_cast<uint8_t>(c);
-    tets += face_triangulation(f, c).count;
+    const uint32_t made = face_tets(tree, around.leaf(), f, c);
+    if (twin != kAbsentLeaf && made > 0) vertex_mask[twin] |= 0x80;  // the twin's centre
+    tets += made;
   }
   vertex_mask[around.leaf()] |= 0x80;  // the leaf centre, child anchor 7
   return tets;
@@ -150,7 +177,7 @@ void number_vertices(const LinearOctree& tree, const RootCube& root,
 }
 
 // Pass 4 for the current leaf of `around`: its tets, written at `out`.
-void emit_tets(const LeafNeighbourhood& around, const uint8_t* cases,
+void emit_tets(const LinearOctree& tree, const LeafNeighbourhood& around, const uint8_t* cases,
                const std::vector<uint8_t>& vertex_mask, const std::vector<uint32_t>& first_vertex,
                uint32_t* out) {
   const uint8_t* mask = vertex_mask.data();
@@ -163,12 +190,33 @@ void emit_tets(const LeafNeighbourhood& around, const uint8_t* cases,
   for (int f = 0; f < kLeafFaces; ++f) {
     const int c = cases[f];
     if (c >= kDiagonalCase) continue;
-    vertex[face_centre(f)] = home_vertex(around.home(face_centre(f)), mask, first);
+    if (paired_leaf(tree, around.leaf(), f) == kAbsentLeaf)
+      vertex[face_centre(f)] = home_vertex(around.home(face_centre(f)), mask, first);
     for (int k = 0; k < 4; ++k)
       if (c >> k & 1)
         vertex[face_midpoint(f, k)] = home_vertex(around.home(face_midpoint(f, k)), mask, first);
   }
   for (int f = 0; f < kLeafFaces; ++f) {
+    const uint32_t twin = paired_leaf(tree, around.leaf(), f);
+    if (twin != kAbsentLeaf) {
+      if (tree.key[twin] < tree.key[around.leaf()]) continue;  // the twin makes them
+      // One tet per boundary segment (a, b) of the face, around the axis
+      // between the two centres, positive with (a, b) counterclockwise
+      // about +axis: (a, b, twin, centre) on a lower face, (b, a, ...) on
+      // an upper one.
+      const uint32_t twin_centre = home_vertex({twin, 7}, mask, first);
+      int points[8];
+      const int n = polygon_points(f, cases[f], points);
+      for (int k = 0; k < n; ++k) {
+        const uint32_t a = vertex[points[k]], b = vertex[points[(k + 1) % n]];
+        out[0] = face_side(f) ? b : a;
+        out[1] = face_side(f) ? a : b;
+        out[2] = twin_centre;
+        out[3] = centre;
+        out += 4;
+      }
+      continue;
+    }
     const FaceTriangulation& t = face_triangulation(f, cases[f]);
     for (int k = 0; k < t.count; ++k) {
       const uint8_t* p = t.tri[k].p;
@@ -182,6 +230,18 @@ void emit_tets(const LeafNeighbourhood& around, const uint8_t* cases,
 }
 
 }  // namespace
+
+uint32_t paired_leaf(const LinearOctree& tree, size_t i, int f) {
+  const uint32_t j = leaf_across(tree, i, f, 0);
+  if (j == kAbsentLeaf || tree.level[j] != tree.level[i] || tree.cls[j] != LeafClass::kInterior) return kAbsentLeaf;
+  return j;
+}
+
+uint32_t face_tets(const LinearOctree& tree, size_t i, int f, int face_case) {
+  const uint32_t twin = paired_leaf(tree, i, f);
+  if (twin == kAbsentLeaf) return face_triangulation(f, face_case).count;
+  return tree.key[i] < tree.key[twin] ? static_cast<uint32_t>(polygon_points(f, face_case, nullptr)) : 0;
+}
 
 namespace {
 
@@ -208,7 +268,7 @@ TemplateCore template_leaves(const LinearOctree& tree, const RootCube& root, int
     const uint32_t i = interior[k];
     around.reset(i, &upper_cells[7 * k]);
     core.leaf_first_tet[i + 1] =
-        choose_face_cases(around, in_v, vertex_mask, &core.face_case[kLeafFaces * i]);
+        choose_face_cases(tree, around, in_v, vertex_mask, &core.face_case[kLeafFaces * i]);
   }
   for (size_t i = 0; i < n; ++i) core.leaf_first_tet[i + 1] += core.leaf_first_tet[i];
 
@@ -219,7 +279,7 @@ TemplateCore template_leaves(const LinearOctree& tree, const RootCube& root, int
     const uint32_t i = interior[k];
     around.reset(i, &upper_cells[7 * k]);
     uint32_t* out = &core.mesh.tets[4 * core.leaf_first_tet[i]];
-    emit_tets(around, &core.face_case[kLeafFaces * i], vertex_mask, core.leaf_first_vertex, out);
+    emit_tets(tree, around, &core.face_case[kLeafFaces * i], vertex_mask, core.leaf_first_vertex, out);
   }
   return core;
 }

@@ -87,8 +87,9 @@ TEST(TemplatesFaceRule, DiagonalJoinsTheEvenEvenCorner) {
 }
 
 TEST(TemplatesFaceRule, WorstDihedralAngleOfTheTemplates) {
-  // Every template tet is a face triangle coned to the leaf centre, so the
-  // tets of one leaf of lattice edge 2 show every shape there is.
+  // Every coned template tet is a face triangle coned to the leaf centre,
+  // so the tets of one leaf of lattice edge 2 show every shape there is
+  // (paired faces make better ones: test_template_random.cpp).
   double worst = 180, widest = 0;
   for (int f = 0; f < kLeafFaces; ++f)
     for (int c = 0; c < kFaceCases; ++c) {

@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "check/quality.hpp"
 #include "core/error.hpp"
 #include "template_trees.hpp"
 #include "templates/face_rule.hpp"
+#include "templates/leaf_neighbourhood.hpp"
 
 namespace partet::test {
 namespace {
@@ -106,25 +108,70 @@ TEST(TemplatesRandom, VerticesAreTheTemplatePointsAtTheirHomes) {
           EXPECT_EQ(mesh.xyz[3 * v + k], static_cast<double>(q.q[k]) / (2.0 * kGridSize));
         }
       }
-      // Leaf tets: 12 to 48, all around the leaf's centre, per face case.
+      // Leaf tets: at most 48, all around the leaf's centre, per face: the
+      // face triangles of a coned face; the boundary segments of a paired
+      // face, around the axis to the twin's centre, from the lower key only.
       const uint64_t first = core.leaf_first_tet[i], count = core.leaf_first_tet[i + 1] - first;
       if (tree.cls[i] != LeafClass::kInterior) {
         EXPECT_EQ(count, 0u);
         EXPECT_EQ(core.face_case[6 * i], kNoFaceCase);
         continue;
       }
-      uint64_t expected = 0;
-      for (int f = 0; f < kLeafFaces; ++f)
-        expected += face_triangulation(f, core.face_case[6 * i + f]).count;
-      EXPECT_EQ(count, expected);
-      EXPECT_GE(count, 12u);
+      uint64_t t = first;
+      for (int f = 0; f < kLeafFaces; ++f) {
+        const int face_case = core.face_case[6 * i + f];
+        const uint32_t twin = paired_leaf(tree, i, f);
+        const uint64_t made = face_tets(tree, i, f, face_case);
+        if (twin == kAbsentLeaf) {
+          EXPECT_EQ(made, face_triangulation(f, face_case).count);
+        } else {
+          const int corners = 4, midpoints = face_case < kDiagonalCase ? __builtin_popcount(face_case) : 0;
+          EXPECT_EQ(made, tree.key[i] < tree.key[twin] ? uint64_t(corners + midpoints) : 0u);
+          const Cell d = tree_cell(tree, twin);
+          for (uint64_t s = t; s < t + made; ++s) {
+            LatticePoint other = lattice_of(core, mesh.tets[4 * s + 2]);
+            for (int k = 0; k < 3; ++k) EXPECT_EQ(other.q[k], 2 * int64_t{d.a[k]} + edge) << "not the twin's centre";
+          }
+        }
+        t += made;
+      }
+      EXPECT_EQ(t, first + count);
       EXPECT_LE(count, 48u);
-      for (uint64_t t = first; t < first + count; ++t) {
-        LatticePoint centre = lattice_of(core, mesh.tets[4 * t + 3]);
+      for (uint64_t s = first; s < first + count; ++s) {
+        LatticePoint centre = lattice_of(core, mesh.tets[4 * s + 3]);
         for (int k = 0; k < 3; ++k) EXPECT_EQ(centre.q[k], 2 * int64_t{c.a[k]} + edge);
       }
     }
   }
+}
+
+TEST(TemplatesRandom, UniformBlockIsTheBodyCentredCubicLattice) {
+  // A 6 x 6 x 6 block of interior level-3 leaves: the 540 faces inside it
+  // are paired, 4 tets each, all of the body-centred cubic lattice; the
+  // 216 faces on its surface are coned, 2 tets each.
+  const RootCube root = unit_root();
+  const uint32_t h = octant_edge(3);
+  LinearOctree tree = make_tree(uniform_cells(3), [&](const Cell& c) {
+    for (uint32_t k : c.a)
+      if (k == 0 || k == 7 * h) return LeafClass::kOutside;
+    return LeafClass::kInterior;
+  });
+  TemplateCore core = template_interior(tree, root);
+  expect_core_conforms(tree, core, "uniform block");
+  ASSERT_EQ(core.mesh.num_tets(), 540u * 4 + 216u * 2);
+  const double pi = std::acos(-1.0);
+  size_t lattice_tets = 0;
+  for (size_t t = 0; t < core.mesh.num_tets(); ++t) {
+    const uint32_t* v = &core.mesh.tets[4 * t];
+    const TetShape shape = tet_shape(core.mesh.point(v[0]), core.mesh.point(v[1]), core.mesh.point(v[2]),
+                                     core.mesh.point(v[3]));
+    EXPECT_GT(shape.volume, 0);
+    if (std::abs(shape.min_dihedral_rad - pi / 3) < 1e-9 && std::abs(shape.max_dihedral_rad - pi / 2) < 1e-9) {
+      EXPECT_NEAR(shape.radius_ratio, 0.9486832980505138, 1e-9);
+      ++lattice_tets;
+    }
+  }
+  EXPECT_EQ(lattice_tets, 540u * 4);
 }
 
 TEST(TemplatesRandom, Deterministic) {
