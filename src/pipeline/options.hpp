@@ -21,7 +21,7 @@ struct MeshOptions {
   double max_size = std::numeric_limits<double>::infinity();  // --max-size H
   double size_factor = 1;                                     // --size-factor F
   int max_level = 20;                                         // --max-level L
-  double too_close = 0.8;                                     // --too-close T
+  double too_close = 0.5;                                     // --too-close T
   BisectionMethod partitioner = BisectionMethod::kMrob;       // --partitioner rob|rib|mrob: boundary leaves (P > 1)
   int optimize_passes = 3;     // --optimize N: quality optimization passes (0, or --no-optimize: none)
   double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone
