@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/kernel_point.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
 
@@ -22,8 +23,10 @@ double quality_of(const TetTopology& topo, const uint32_t* v) {
 }
 
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
+// With `settled` (p is already a good place, e.g. a kernel's deepest
+// point), a cone no better than the cavity before smoothing is not tried.
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
-                SmoothingScratch& scratch) {
+                SmoothingScratch& scratch, bool settled = false) {
   std::vector<uint32_t> old_tets, new_tets, created;
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
@@ -56,6 +59,14 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
       return false;
     }
   }
+  if (settled) {
+    double start = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < new_tets.size(); i += 4) start = std::min(start, quality_of(topo, &new_tets[i]));
+    if (!(start > old_quality)) {
+      topo.remove_last_vertex();
+      return false;
+    }
+  }
   topo.replace(cavity, new_tets, created);
   smooth_vertex(topo, v, scratch);
   double new_quality = std::numeric_limits<double>::infinity();
@@ -71,6 +82,26 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   return false;
 }
 
+// The outer faces of `cavity`, each as 3 points looking into the cavity
+// (orient3d(a, b, c, q) > 0 for q inside near the face): for face f of tet
+// t, the tet with vertex f replaced by q is (a, b, c, q) up to an even
+// permutation.
+std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint32_t>& cavity) {
+  std::vector<double> faces;
+  for (uint32_t t : cavity)
+    for (int f = 0; f < 4; ++f) {
+      const uint32_t other = topo.twin(4 * t + f);
+      if (other != TetTopology::kNone && std::find(cavity.begin(), cavity.end(), other / 4) != cavity.end()) continue;
+      uint32_t tri[3];
+      int n = 0;
+      for (int k = 0; k < 4; ++k)
+        if (k != f) tri[n++] = topo.tet(t)[k];
+      if ((3 - f) % 2 == 1) std::swap(tri[0], tri[1]);  // moving q from slot f to slot 3 is 3 - f swaps
+      for (uint32_t v : tri) faces.insert(faces.end(), topo.point(v), topo.point(v) + 3);
+    }
+  return faces;
+}
+
 }  // namespace
 
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
@@ -84,7 +115,23 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
   std::vector<uint32_t> cavity = {t};
   for (int f = 0; f < 4; ++f)
     if (topo.twin(4 * t + f) != TetTopology::kNone) cavity.push_back(topo.twin(4 * t + f) / 4);
-  if (cavity.size() > 1 && try_cavity(topo, cavity, centroid, bar, scratch)) return true;
+  if (cavity.size() > 1) {
+    if (try_cavity(topo, cavity, centroid, bar, scratch)) return true;
+    // The centroid of a flat tet lies near its plane, where the cavity's
+    // faces on the far side (e.g. boundary faces) cannot see it: the
+    // deepest point of the cavity's kernel can.
+    const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
+    if (kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, true)) return true;
+    // The tets around t's vertices: a kernel with room for a good vertex.
+    std::vector<uint32_t> wider = cavity, star;
+    for (int k = 0; k < 4; ++k) {
+      topo.vertex_star(topo.tet(t)[k], star);
+      for (uint32_t s : star)
+        if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
+    }
+    const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
+    if (deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, true)) return true;
+  }
   return try_cavity(topo, {t}, centroid, bar, scratch);
 }
 

@@ -1,7 +1,15 @@
 // Interior vertex insertion around a bad tet (after Klingner and Shewchuk):
-// a new vertex at the tet's centroid is joined to the outer faces of a
-// cavity (the tet alone, or the tet with its face neighbours), the new
-// vertex is then smoothed (smoothing.hpp), and the insertion is kept only
+// a new vertex is joined to the outer faces of a cavity, in turn
+//  1. the tet with its face neighbours, the vertex at the tet's centroid;
+//  2. the same cavity, the vertex at the deepest point of its kernel
+//     (core/kernel_point.hpp);
+//  3. the tets around the tet's four vertices, the vertex at the deepest
+//     point of their kernel: what a flat tet on four surface vertices (over
+//     two nearly coplanar surface triangles) needs, whose centroid lies on
+//     the surface and whose neighbours leave little room;
+//  4. the tet alone, the vertex at its centroid.
+// A kernel point is tried only when its cone already beats the cavity. The
+// new vertex is then smoothed (smoothing.hpp), and the insertion is kept only
 // if the worst new tet beats the worst tet of the cavity and the total
 // shortfall (sum of bar - quality over the tets below bar = min(target,
 // quality of 20 degrees)) does not grow: one bad tet is not traded for many

@@ -128,6 +128,20 @@ TEST(OptimizeMesh, AllFrozenOnlyFlips) {
   EXPECT_EQ(boundary_faces(mesh), boundary_faces(original));
 }
 
+// Flat tets on four surface vertices, e.g. over two nearly coplanar surface
+// triangles, cannot be moved or flipped away: a vertex at the deepest
+// point of the kernel of the tets around theirs replaces them.
+TEST(OptimizeMesh, FlatTetsOnTheSurfaceGetAVertexAbove) {
+  for (const char* name : {"good/pipe.off", "good/eight.off", "good/dragknob.off"}) {
+    TetMesh mesh = unoptimized(name, "");
+    OptimizeStats stats = optimize_mesh(mesh, OptimizeOptions{});
+    EXPECT_LT(stats.before.min_dihedral_deg, 1.0) << name;
+    EXPECT_GT(stats.after.min_dihedral_deg, 2.0) << name;
+    EXPECT_GT(stats.vertices_inserted, 0u) << name;
+    EXPECT_TRUE(validate_mesh(mesh, nullptr).valid) << name;
+  }
+}
+
 TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
   const std::string dir = scratch_dir("optimize_cli");
   const std::string surface = data_path("good/icosahedron.off");
