@@ -17,6 +17,9 @@ namespace {
 // the full target, a new vertex never pays off; with none, one bad tet is
 // traded for a dozen barely better ones.
 constexpr double kShortfallAngle = 20;
+// A tet with an angle under this many degrees counts as a sliver: replacing
+// one by tets all above it pays even when the shortfall grows.
+constexpr double kSliverAngle = 10;
 
 double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
@@ -75,7 +78,11 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
     new_quality = std::min(new_quality, q);
     new_deficit += std::max(0.0, bar - q);
   }
-  if (new_quality > old_quality && new_deficit <= old_deficit) return true;
+  // Kept when the worst tet improves and either the shortfall does not grow
+  // or a tet under 10 degrees gives way to tets all above.
+  const double ten = quality_of_angle(kSliverAngle);
+  if (new_quality > old_quality && (new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)))
+    return true;
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);
   topo.remove_last_vertex();

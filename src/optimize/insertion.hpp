@@ -10,10 +10,12 @@
 //  4. the tet alone, the vertex at its centroid.
 // A kernel point is tried only when its cone already beats the cavity. The
 // new vertex is then smoothed (smoothing.hpp), and the insertion is kept only
-// if the worst new tet beats the worst tet of the cavity and the total
-// shortfall (sum of bar - quality over the tets below bar = min(target,
-// quality of 20 degrees)) does not grow: one bad tet is not traded for many
-// mediocre ones. Otherwise the
+// if the worst new tet beats the worst tet of the cavity and either the
+// total shortfall (sum of bar - quality over the tets below bar =
+// min(target, quality of 20 degrees)) does not grow, so that one bad tet is
+// not traded for many mediocre ones, or the worst tet of the cavity has an
+// angle under 10 degrees and no new tet does (a sliver traded for a few
+// mediocre tets is a gain). Otherwise the
 // cavity and the vertex arrays are restored exactly. Every new tet is
 // positive by exact orient3d (the cavity is star-shaped from the point).
 // The cavity's outer faces, boundary faces among them, stay as they are,

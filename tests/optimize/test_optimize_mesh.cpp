@@ -142,6 +142,17 @@ TEST(OptimizeMesh, FlatTetsOnTheSurfaceGetAVertexAbove) {
   }
 }
 
+// A sliver (an angle under 10 degrees) is worth a few mediocre tets: the
+// insertion that removes tripod's last one makes tets under 20 degrees.
+TEST(OptimizeMesh, SliversGiveWayToTetsAboveTenDegrees) {
+  TetMesh mesh = unoptimized("good/tripod.off", "");
+  OptimizeStats stats = optimize_mesh(mesh, OptimizeOptions{});
+  EXPECT_GT(stats.before.dihedral_under_10, 0u);
+  EXPECT_EQ(stats.after.dihedral_under_10, 0u);
+  EXPECT_GT(stats.after.min_dihedral_deg, 10.0);
+  EXPECT_TRUE(validate_mesh(mesh, nullptr).valid);
+}
+
 TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
   const std::string dir = scratch_dir("optimize_cli");
   const std::string surface = data_path("good/icosahedron.off");
