@@ -91,12 +91,6 @@ std::vector<uint8_t> mark_corners(const LinearOctree& tree, const std::vector<ui
   return in_v;
 }
 
-}  // namespace
-
-uint32_t face_tets(const LinearOctree& tree, size_t i, int f, int face_case);
-
-namespace {
-
 // Pass 2 for the current leaf of `around`: its face cases, and the vertices
 // its tets use marked in `vertex_mask` (its corners, the midpoints in V and
 // centres of its fanned faces, its centre). Returns its tet count.
