@@ -32,8 +32,11 @@ using test::scratch_dir;
 // Meshes `surface` with partet (`extra` options, no optimization) and reads
 // the result; when meshing cannot finish (exit 3), the partial mesh, whose
 // boundary includes the front left. `finished` says which.
+// The scratch directory is the test's own: ctest runs tests in parallel.
 TetMesh unoptimized(const std::string& surface, const std::string& extra, bool* finished = nullptr) {
-  const std::string dir = scratch_dir("optimize_" + std::to_string(std::hash<std::string>{}(surface + extra)));
+  const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string key = std::string(test->test_suite_name()) + test->name() + surface + extra;
+  const std::string dir = scratch_dir("optimize_" + std::to_string(std::hash<std::string>{}(key)));
   const std::string out = dir + "/mesh.vtu";
   auto r = run_partet(data_path(surface) + " -o " + out + " --no-optimize --keep-partial -q " + extra);
   EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.output;
