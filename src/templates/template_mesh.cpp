@@ -54,6 +54,13 @@ int polygon_points(int f, int c, int* points) {
   return n;
 }
 
+// Tets leaf i makes over face f in case c, its twin across f being `twin`
+// (paired_leaf): see face_tets.
+uint32_t tets_over_face(const LinearOctree& tree, size_t i, int f, int c, uint32_t twin) {
+  if (twin == kAbsentLeaf) return face_triangulation(f, c).count;
+  return tree.key[i] < tree.key[twin] ? static_cast<uint32_t>(polygon_points(f, c, nullptr)) : 0;
+}
+
 // The interior leaves whose corners are in V: all of them, or with a part
 // those with an owner (own and layer-1 leaves of a local view).
 std::vector<uint32_t> interior_leaves(const LinearOctree& tree, int32_t part) {
@@ -129,7 +136,7 @@ uint32_t choose_face_cases(const LinearOctree& tree, const LeafNeighbourhood& ar
       c = diagonal_case(f, around.anchor(), around.edge());
     }
     cases[f] = static_cast<uint8_t>(c);
-    const uint32_t made = face_tets(tree, around.leaf(), f, c);
+    const uint32_t made = tets_over_face(tree, around.leaf(), f, c, twin);
     if (twin != kAbsentLeaf && made > 0) vertex_mask[twin] |= 0x80;  // the twin's centre
     tets += made;
   }
@@ -181,17 +188,19 @@ void emit_tets(const LinearOctree& tree, const LeafNeighbourhood& around, const 
     vertex[corner_point(c)] = home_vertex(around.home(corner_point(c)), mask, first);
   const uint32_t centre = home_vertex({static_cast<uint32_t>(around.leaf()), 7}, mask, first);
   vertex[kLeafCentre] = centre;
+  uint32_t twins[kLeafFaces];
+  for (int f = 0; f < kLeafFaces; ++f) twins[f] = paired_leaf(tree, around.leaf(), f);
   for (int f = 0; f < kLeafFaces; ++f) {
     const int c = cases[f];
     if (c >= kDiagonalCase) continue;
-    if (paired_leaf(tree, around.leaf(), f) == kAbsentLeaf)
+    if (twins[f] == kAbsentLeaf)
       vertex[face_centre(f)] = home_vertex(around.home(face_centre(f)), mask, first);
     for (int k = 0; k < 4; ++k)
       if (c >> k & 1)
         vertex[face_midpoint(f, k)] = home_vertex(around.home(face_midpoint(f, k)), mask, first);
   }
   for (int f = 0; f < kLeafFaces; ++f) {
-    const uint32_t twin = paired_leaf(tree, around.leaf(), f);
+    const uint32_t twin = twins[f];
     if (twin != kAbsentLeaf) {
       if (tree.key[twin] < tree.key[around.leaf()]) continue;  // the twin makes them
       // One tet per boundary segment (a, b) of the face, around the axis
@@ -232,9 +241,7 @@ uint32_t paired_leaf(const LinearOctree& tree, size_t i, int f) {
 }
 
 uint32_t face_tets(const LinearOctree& tree, size_t i, int f, int face_case) {
-  const uint32_t twin = paired_leaf(tree, i, f);
-  if (twin == kAbsentLeaf) return face_triangulation(f, face_case).count;
-  return tree.key[i] < tree.key[twin] ? static_cast<uint32_t>(polygon_points(f, face_case, nullptr)) : 0;
+  return tets_over_face(tree, i, f, face_case, paired_leaf(tree, i, f));
 }
 
 namespace {
