@@ -16,7 +16,6 @@ constexpr int kHalvings = 6;           // line-search halvings per step
 constexpr double kActiveBand = 1e-3;   // tets this close to the worst are active
 constexpr double kModelBand = 0.1;     // tets this close to the worst are modelled for the first step
 constexpr double kMaxMove = 0.5;       // longest step, in units of scale
-constexpr double kGradientStep = 1e-6; // central-difference step, in units of scale
 
 double dot3(const double* u, const double* w) { return u[0] * w[0] + u[1] * w[1] + u[2] * w[2]; }
 
@@ -30,6 +29,14 @@ class Star {
     points(k, x, p);
     return tet_quality(p[0], p[1], p[2], p[3]);
   }
+  // Quality of star tet k with v at x, and its gradient in x.
+  double quality_gradient(size_t k, const double* x, double* gradient) const {
+    const double* p[4];
+    points(k, x, p);
+    const uint32_t* t = topo_.tet(tets_[k]);
+    const int j = t[0] == v_ ? 0 : t[1] == v_ ? 1 : t[2] == v_ ? 2 : 3;
+    return tet_quality_gradient(p, j, gradient);
+  }
   bool positive(const double* x) const {
     for (size_t k = 0; k < tets_.size(); ++k) {
       const double* p[4];
@@ -38,10 +45,15 @@ class Star {
     }
     return true;
   }
-  double worst(const double* x) const {
-    double q = quality(0, x);
-    for (size_t k = 1; k < tets_.size(); ++k) q = std::min(q, quality(k, x));
-    return q;
+  // True when every star tet's quality with v at x exceeds `bar`; stops at
+  // the first that does not. The qualities go to `quality` (complete only
+  // when true).
+  bool all_above(const double* x, double bar, std::vector<double>& quality) const {
+    for (size_t k = 0; k < tets_.size(); ++k) {
+      quality[k] = this->quality(k, x);
+      if (!(quality[k] > bar)) return false;
+    }
+    return true;
   }
   // Mean distance from x to the other vertices of the star's tets.
   double scale(const double* x) const {
@@ -99,28 +111,18 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   std::copy_n(topo.point(v), 3, x);
   const double scale = star.scale(x);
   if (!(scale > 0)) return false;
-  const double h = kGradientStep * scale;
   scratch.quality.resize(n);
+  scratch.trial.resize(n);
   scratch.gradient.resize(3 * n);
   std::vector<size_t>& active = scratch.active;
   bool moved = false;
 
+  for (size_t k = 0; k < n; ++k) scratch.quality[k] = star.quality(k, x);
   for (int step = 0; step < kMaxSteps; ++step) {
-    double worst = 0;
-    for (size_t k = 0; k < n; ++k) {
-      scratch.quality[k] = star.quality(k, x);
-      worst = k == 0 ? scratch.quality[k] : std::min(worst, scratch.quality[k]);
-    }
-    for (size_t k = 0; k < n; ++k) {
-      if (scratch.quality[k] > worst + kModelBand) continue;
-      for (int i = 0; i < 3; ++i) {
-        double y[3] = {x[0], x[1], x[2]};
-        y[i] = x[i] + h;
-        const double up = star.quality(k, y);
-        y[i] = x[i] - h;
-        scratch.gradient[3 * k + i] = (up - star.quality(k, y)) / (2 * h);
-      }
-    }
+    // scratch.quality holds the star's qualities at x.
+    const double worst = *std::min_element(scratch.quality.begin(), scratch.quality.end());
+    for (size_t k = 0; k < n; ++k)
+      if (scratch.quality[k] <= worst + kModelBand) star.quality_gradient(k, x, &scratch.gradient[3 * k]);
     active.clear();
     for (size_t k = 0; k < n; ++k)
       if (scratch.quality[k] <= worst + kActiveBand) active.push_back(k);
@@ -143,7 +145,8 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     bool improved = false;
     for (int halving = 0; halving < kHalvings && !improved; ++halving, alpha /= 2) {
       const double y[3] = {x[0] + alpha * d[0], x[1] + alpha * d[1], x[2] + alpha * d[2]};
-      if (star.worst(y) > worst && star.positive(y)) {
+      if (star.all_above(y, worst, scratch.trial) && star.positive(y)) {
+        scratch.quality.swap(scratch.trial);
         std::copy_n(y, 3, x);
         improved = true;
       }

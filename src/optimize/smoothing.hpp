@@ -1,12 +1,14 @@
 // Optimization-based smoothing of one vertex (after Freitag, Jones and
 // Plassmann, as used by Klingner and Shewchuk): raise the worst tet_quality
 // of the vertex's star by a few steps of non-smooth ascent. Each step takes
-// the gradients (central differences) of the star's tets within 0.1 of the
-// worst quality, the search direction as the point of least norm in the
-// convex hull of the gradients of the active (near-worst) tets, a first
-// step length where the linear models predict another modelled tet becomes
-// the worst, and halves it until the worst quality strictly improves and
-// every star tet is positive by exact orient3d. The vertex moves only then: never to a worse or invalid place.
+// the analytic gradients (tet_quality_gradient) of the star's tets within
+// 0.1 of the worst quality, the search direction as the point of least norm
+// in the convex hull of the gradients of the active (near-worst) tets, a
+// first step length where the linear models predict another modelled tet
+// becomes the worst, and halves it until the worst quality strictly
+// improves (a trial stops at its first tet not above the old worst) and
+// every star tet is positive by exact orient3d. The vertex moves only then:
+// never to a worse or invalid place.
 //
 // Contract: v is not on the boundary (its star is closed) and not frozen;
 // the caller decides which vertices may move.
@@ -23,6 +25,7 @@ namespace partet {
 struct SmoothingScratch {
   std::vector<uint32_t> star;
   std::vector<double> quality;   // per star tet
+  std::vector<double> trial;     // per star tet, at a trial point
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
 };

@@ -18,6 +18,13 @@ inline constexpr double kRegularSineScale = 1.0606601717798212;
 
 double tet_quality(const double* p0, const double* p1, const double* p2, const double* p3);
 
+// tet_quality and its gradient with respect to vertex p[j] (j in 0..3), in
+// `gradient`. Where two edges tie for the smallest sine the measure has a
+// kink; the gradient is then that of the edge listed first (01, 02, 03,
+// 12, 13, 23), one of the one-sided gradients. 0 and a zero gradient for a
+// tet with a zero-area face.
+double tet_quality_gradient(const double* const p[4], int j, double gradient[3]);
+
 // The quality threshold of an angle: a tet scores at least
 // quality_of_angle(a) exactly when its dihedral angles all lie in
 // [a, 180 - a] degrees (0 < a <= 90).
