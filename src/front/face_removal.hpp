@@ -51,6 +51,9 @@ struct RemovalOptions {
   double reach = 1.0;       // neighbourhood half-size in longest base edges
   double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
+  // Tree-less removals only: rounds in a row without a smaller front before
+  // they give up (treeless_removal.hpp; the corpus closes in at most 25).
+  size_t stall_rounds = 32;
 };
 
 // What earlier calls learnt: per face slot, the front's change counter when

@@ -452,6 +452,7 @@ TreelessCounts TreelessRemover::run() {
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;
   bool changed = front_.num_alive_faces() > 0;
+  size_t smallest = front_.num_alive_faces(), since_smallest = 0;
   while (changed && front_.num_alive_faces() > 0) {
     ++counts_.rounds;
     changed = false;
@@ -489,6 +490,13 @@ TreelessCounts TreelessRemover::run() {
     tree_pass();
     changed = out_.num_tets() != tets_before || counts_.tets_deleted != deleted_before;
     if (front_.num_vertices() >= vertex_budget_ || counts_.tets_deleted >= deletion_budget_) break;
+    if (front_.num_alive_faces() < smallest) {
+      smallest = front_.num_alive_faces();
+      since_smallest = 0;
+    } else if (++since_smallest >= options_.stall_rounds) {
+      counts_.stalled = true;
+      break;
+    }
   }
   if (incidence_) incidence_->drop_dead_tets(out_);
   counts_.faces_left = front_.num_alive_faces();

@@ -6,9 +6,13 @@
 // no tet behind it, so it is never reopened, and new vertices are strictly
 // inside the unmeshed region.
 //
-// Rounds, until the front is empty, a round changes nothing, or a budget
-// is spent (new vertices: 4 x the alive faces at the start + 64; deleted
-// tets: 64 x those faces + 1024). A round splits the alive faces into
+// Rounds, until the front is empty, a round changes nothing, a budget is
+// spent (new vertices: 4 x the alive faces at the start + 64; deleted
+// tets: 64 x those faces + 1024), or options.stall_rounds (default 32)
+// rounds in a row end without a front smaller than every earlier one (the
+// call has stalled: a front that diverges, as on thin walls of long skinny
+// triangles without a templated core, would otherwise churn for hundreds
+// of rounds until a budget runs out). A round splits the alive faces into
 // components (faces sharing an edge) and, for each component of at most
 // kMaxCavityFaces faces in order of its lowest face index:
 //  1. star fill: q = the deepest point of the component's kernel
@@ -81,6 +85,7 @@ struct TreelessCounts {
   size_t checks = 0;
   size_t faces_left = 0;
   size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
+  bool stalled = false;        // ended by stall_rounds rounds without a smaller front
 };
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`

@@ -405,6 +405,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       SurfaceMesh left;
       std::unique_ptr<Front> front;
       RemovalMemo memo;
+      bool stalled = false;
       report.run_step("face removals (tree)", [&] {
         if (!root_rank) return ojson::object();
         front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
@@ -436,7 +437,9 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
           c["partial cones"] = n.partial_cones;
           c["advances"] = n.advances;
           c["rounds"] = n.rounds;
+          c["stalled"] = n.stalled;
           c["faces left"] = n.faces_left;
+          stalled = n.stalled;
           return c;
         });
       }
@@ -453,8 +456,9 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
             return c;
           });
         }
-        throw MeshingError(options.input + ": face removals could not close the front: " +
-                           where_left(left) + (options.keep_partial ? "; the tets made and the front left were written"
+        throw MeshingError(options.input + ": face removals could not close the front: " + where_left(left) +
+                           (stalled ? " (the tree-less removals stalled: " + std::to_string(RemovalOptions{}.stall_rounds) + " rounds without a smaller front)" : "") +
+                           (options.keep_partial ? "; the tets made and the front left were written"
                                                                     : "; nothing was written (--keep-partial writes "
                                                                       "the tets made and the front left)"));
       }

@@ -65,14 +65,14 @@ struct Meshed {
 };
 
 // Both removal steps, then the checks every result must pass.
-Meshed mesh_surface(SurfaceMesh surface, const std::string& name) {
+Meshed mesh_surface(SurfaceMesh surface, const std::string& name, const RemovalOptions& options = {}) {
   Started s = start(std::move(surface), name);
   Front front(s.initial, s.tree, s.root);
   Meshed r;
   r.out = s.core.mesh;
   const size_t tree_left = remove_faces_tree_supported(front, s.tree, s.root, r.out).faces_left;
   const size_t front_vertices = front.num_vertices();
-  r.counts = remove_faces_treeless(front, s.tree, s.root, r.out);
+  r.counts = remove_faces_treeless(front, s.tree, s.root, r.out, options);
   r.faces_left = r.counts.faces_left;
   EXPECT_EQ(r.faces_left, front.num_alive_faces());
   EXPECT_EQ(r.out.num_vertices(), front.num_vertices());
@@ -99,7 +99,9 @@ Meshed mesh_surface(SurfaceMesh surface, const std::string& name) {
   return r;
 }
 
-Meshed mesh_file(const std::string& name) { return mesh_surface(read_surface_file(data_path(name)), name); }
+Meshed mesh_file(const std::string& name, const RemovalOptions& options = {}) {
+  return mesh_surface(read_surface_file(data_path(name)), name, options);
+}
 
 TEST(FrontTreeless, EveryDataSurfaceCloses) {
   for (const char* name :
@@ -119,6 +121,22 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
     EXPECT_EQ(r.faces_left, 0u) << name;
     EXPECT_LT(r.counts.rounds, 50u) << name;
   }
+}
+
+// pinion's thin walls of long fan triangles have no templated core; its
+// front does not shrink in every round, yet closes. With stall_rounds 1
+// the call stops at the first round that does not shrink it, stalled, and
+// leaves a valid partial mesh.
+TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
+  RemovalOptions impatient;
+  impatient.stall_rounds = 1;
+  const Meshed stopped = mesh_file("hard/pinion.off", impatient);
+  EXPECT_TRUE(stopped.counts.stalled);
+  EXPECT_GT(stopped.faces_left, 0u);
+  const Meshed closed = mesh_file("hard/pinion.off");
+  EXPECT_FALSE(closed.counts.stalled);
+  EXPECT_EQ(closed.faces_left, 0u);
+  EXPECT_LT(stopped.counts.rounds, closed.counts.rounds);
 }
 
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
