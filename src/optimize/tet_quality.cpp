@@ -1,6 +1,8 @@
 // tet_quality and its gradient (see tet_quality.hpp): four face normals,
 // six squared edge lengths, one square root; the gradient differentiates
-// q = K d |e| / sqrt(m_a m_b) for the edge e that gives q.
+// q = K d |e| / sqrt(m_a m_b) for the edge e that gives q. tet_quality
+// keeps its own straight-line copy of the shared set-up: through a common
+// helper the optimizer's topology and smoothing steps ran 45 % slower (femur).
 #include "optimize/tet_quality.hpp"
 
 #include <algorithm>
