@@ -286,6 +286,18 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
 
 }  // namespace
 
+void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
+  for (std::vector<uint64_t>* at : {&failed_capped_at, &failed_full_at}) {
+    std::vector<uint64_t> kept;
+    for (size_t f = 0; f < new_face.size() && f < at->size(); ++f)
+      if (new_face[f] != kNoIndex) {
+        PARTET_ASSERT(new_face[f] == kept.size(), "face renumbering out of order");
+        kept.push_back((*at)[f]);
+      }
+    at->swap(kept);
+  }
+}
+
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
                       std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
   const uint32_t* t = front.face(f);

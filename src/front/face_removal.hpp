@@ -66,6 +66,9 @@ struct RemovalOptions {
 struct RemovalMemo {
   double min_quality = 0;
   std::vector<uint64_t> failed_capped_at, failed_full_at;
+
+  // Follows Front::compact: `new_face` maps old face slots to new ones.
+  void renumber(const std::vector<uint32_t>& new_face);
 };
 
 struct RemovalCounts {

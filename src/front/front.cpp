@@ -3,6 +3,7 @@
 #include "front/front.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "octree/box_triangle.hpp"
@@ -22,14 +23,33 @@ uint64_t edge_key(uint32_t a, uint32_t b) {
   return (uint64_t{a} << 32) | b;
 }
 
+// splitmix64's finalizer: every input bit moves every output bit.
+uint64_t mix(uint64_t h) {
+  h ^= h >> 30;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 27;
+  h *= 0x94D049BB133111EBull;
+  return h ^ (h >> 31);
+}
+
+// The nearest float at or below x, at or above x: a float box rounded
+// outwards holds the double box.
+float float_below(double x) {
+  float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+}
+float float_above(double x) {
+  float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+}
+
 }  // namespace
 
-size_t Front::TripleHash::operator()(const std::array<uint32_t, 3>& k) const {
-  uint64_t h = k[0];
-  h = h * 0x9E3779B97F4A7C15ull ^ k[1];
-  h = h * 0x9E3779B97F4A7C15ull ^ k[2];
-  return static_cast<size_t>(h ^ (h >> 29));
+uint64_t Front::TripleTraits::hash(const std::array<uint32_t, 3>& k) {
+  return mix((uint64_t{k[0]} << 32 | k[1]) ^ mix(k[2]));
 }
+
+uint64_t Front::EdgeTraits::hash(uint64_t k) { return mix(k); }
 
 Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root)
     : tree_(tree),
@@ -51,8 +71,9 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
   faces_.reserve(3 * n);
   alive_.reserve(n);
   face_boxes_.reserve(6 * n);
-  face_of_triple_.reserve(2 * n);
-  edge_uses_.reserve(3 * n);
+  // A closed front has 3/2 edges per face; both tables shrink from here.
+  face_of_triple_.reserve(n);
+  edge_uses_.reserve(n + n / 2);
   for (size_t f = 0; f < n; ++f) {
     const uint32_t* t = &initial.faces[3 * f];
     PARTET_ASSERT(find_face(t[0], t[1], t[2]) == kNoIndex, "initial front has two faces on one vertex triple");
@@ -61,24 +82,24 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
 }
 
 uint32_t Front::find_face(uint32_t a, uint32_t b, uint32_t c) const {
-  auto it = face_of_triple_.find(sorted_triple(a, b, c));
-  return it == face_of_triple_.end() ? kNoIndex : it->second;
+  const uint32_t* f = face_of_triple_.find(sorted_triple(a, b, c));
+  return f ? *f : kNoIndex;
 }
 
 uint32_t Front::edge_uses(uint32_t a, uint32_t b) const {
-  auto it = edge_uses_.find(edge_key(a, b));
-  return it == edge_uses_.end() ? 0 : it->second;
+  const uint32_t* n = edge_uses_.find(edge_key(a, b));
+  return n ? *n : 0;
 }
 
 void Front::change_edge(uint32_t a, uint32_t b, int delta) {
   const uint64_t key = edge_key(a, b);
   if (delta > 0) {
-    ++edge_uses_[key];
+    ++edge_uses_.get_or_insert(key, 0);
     return;
   }
-  auto it = edge_uses_.find(key);
-  PARTET_ASSERT(it != edge_uses_.end() && it->second > 0, "front edge count underflow");
-  if (--it->second == 0) edge_uses_.erase(it);
+  uint32_t* n = edge_uses_.find(key);
+  PARTET_ASSERT(n && *n > 0, "front edge count underflow");
+  if (--*n == 0) edge_uses_.erase(key);
 }
 
 void Front::use_vertex(uint32_t v) {
@@ -112,7 +133,7 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
   alive_.push_back(1);
   face_first_entry_.push_back(kNoIndex);
   ++alive_count_;
-  face_of_triple_.emplace(sorted_triple(a, b, c), f);
+  face_of_triple_.get_or_insert(sorted_triple(a, b, c), f);
   change_edge(a, b, 1);
   change_edge(b, c, 1);
   change_edge(c, a, 1);
@@ -125,14 +146,21 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
     lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
     hi[k] = std::max({point(a)[k], point(b)[k], point(c)[k]});
   }
-  face_boxes_.insert(face_boxes_.end(), {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]});
+  face_boxes_.insert(face_boxes_.end(), {float_below(lo[0]), float_below(lo[1]), float_below(lo[2]),
+                                         float_above(hi[0]), float_above(hi[1]), float_above(hi[2])});
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
   query_.leaves_in_range(glo, ghi, leaves_scratch_);
+  double root_hi[3];
+  for (int k = 0; k < 3; ++k) root_hi[k] = root_.origin[k] + root_.edge();
   for (size_t leaf : leaves_scratch_) {
-    double leaf_lo[3], leaf_hi[3];
-    leaf_box(tree_, root_, leaf, leaf_lo, leaf_hi);
-    if (!box_meets_triangle(leaf_lo, leaf_hi, point(a), point(b), point(c))) continue;
+    const bool vertex_leaf = leaf == vertex_leaf_[a] || leaf == vertex_leaf_[b] || leaf == vertex_leaf_[c];
+    if (!vertex_leaf) {
+      double leaf_lo[3], leaf_hi[3];
+      leaf_box(tree_, root_, leaf, leaf_lo, leaf_hi);
+      const bool open[3] = {leaf_hi[0] < root_hi[0], leaf_hi[1] < root_hi[1], leaf_hi[2] < root_hi[2]};
+      if (!box_meets_triangle_half_open(leaf_lo, leaf_hi, open, point(a), point(b), point(c))) continue;
+    }
     uint32_t e;
     if (free_entry_ != kNoIndex) {
       e = free_entry_;
@@ -248,4 +276,64 @@ void Front::remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std:
     if (twin != kNoIndex) close_face(twin, shrunk);
 }
 
+std::vector<uint32_t> Front::compact() {
+  std::vector<uint32_t> new_face(alive_.size(), kNoIndex);
+  uint32_t n = 0;
+  for (uint32_t f = 0; f < alive_.size(); ++f)
+    if (alive_[f]) new_face[f] = n++;
+  std::vector<uint32_t> new_entry(entry_face_.size(), kNoIndex);
+  for (uint32_t f = 0; f < alive_.size(); ++f)
+    for (uint32_t e = alive_[f] ? face_first_entry_[f] : kNoIndex; e != kNoIndex; e = entry_chain_[e]) new_entry[e] = 0;
+  uint32_t m = 0;
+  for (uint32_t& e : new_entry)
+    if (e != kNoIndex) e = m++;
+  const auto entry_of = [&](uint32_t e) { return e == kNoIndex ? kNoIndex : new_entry[e]; };
+
+  std::vector<uint32_t> faces(3 * size_t{n}), first_entry(n);
+  std::vector<float> boxes(6 * size_t{n});
+  for (uint32_t f = 0; f < alive_.size(); ++f) {
+    if (new_face[f] == kNoIndex) continue;
+    const size_t g = new_face[f];
+    std::copy_n(&faces_[3 * size_t{f}], 3, &faces[3 * g]);
+    std::copy_n(&face_boxes_[6 * size_t{f}], 6, &boxes[6 * g]);
+    first_entry[g] = entry_of(face_first_entry_[f]);
+  }
+  std::vector<uint32_t> entry_face(m), entry_leaf(m), entry_prev(m), entry_next(m), entry_chain(m);
+  for (uint32_t e = 0; e < new_entry.size(); ++e) {
+    const uint32_t k = new_entry[e];
+    if (k == kNoIndex) continue;
+    entry_face[k] = new_face[entry_face_[e]];
+    entry_leaf[k] = entry_leaf_[e];
+    entry_prev[k] = entry_of(entry_prev_[e]);
+    entry_next[k] = entry_of(entry_next_[e]);
+    entry_chain[k] = entry_of(entry_chain_[e]);
+  }
+  for (uint32_t& head : leaf_entry_head_) head = entry_of(head);
+  faces_.swap(faces);
+  face_boxes_.swap(boxes);
+  face_first_entry_.swap(first_entry);
+  alive_.assign(n, 1);
+  alive_.shrink_to_fit();
+  entry_face_.swap(entry_face);
+  entry_leaf_.swap(entry_leaf);
+  entry_prev_.swap(entry_prev);
+  entry_next_.swap(entry_next);
+  entry_chain_.swap(entry_chain);
+  free_entry_ = kNoIndex;
+
+  face_of_triple_ = {};
+  edge_uses_ = {};
+  face_of_triple_.reserve(n);
+  edge_uses_.reserve(n + n / 2);
+  for (uint32_t f = 0; f < n; ++f) {
+    const uint32_t *t = &faces_[3 * size_t{f}];
+    face_of_triple_.get_or_insert(sorted_triple(t[0], t[1], t[2]), f);
+    change_edge(t[0], t[1], 1);
+    change_edge(t[1], t[2], 1);
+    change_edge(t[2], t[0], 1);
+  }
+  return new_face;
+}
+
 }  // namespace partet
+

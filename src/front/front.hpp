@@ -12,15 +12,20 @@
 //  - a hash from the sorted vertex triple to the alive face with those
 //    vertices (at most one: a face whose reverse is alive closes both), and
 //    a hash from the sorted vertex pair to the number of alive faces using
-//    that edge (front edges);
-//  - the leaf index: every alive face is listed in every leaf whose closed
-//    box it meets (exact box-triangle test over the leaves of
-//    grid_range(face's bounding box)). A face meeting a box B at a point x
-//    is then listed in a leaf whose closed box holds x, and that leaf is
-//    one of grid_range(B) (padded by a cell), so gathering the faces of the
-//    leaves over B finds every face that can meet B; the validity checks
-//    need exactly that. Front vertices are listed in the leaf
-//    containing them. Both lists are doubly linked head/next lists in flat
+//    that edge (front edges), both flat open-addressing tables;
+//  - the leaf index: every alive face is listed in every leaf whose
+//    half-open box [lo, hi) it meets (exact box-triangle test over the
+//    leaves of grid_range(face's bounding box); closed on the root cube's
+//    upper faces), and in the leaves of its three vertices. Half-open
+//    boxes tile the root cube, so a face meeting a box B at a point x is
+//    listed in the one leaf holding x, which is one of grid_range(B), and
+//    gathering the faces of the leaves over B finds every face that can
+//    meet B; the validity checks need exactly that. (Closed boxes would
+//    list a face lying on a leaf's side, as the templated core's faces
+//    do, in every leaf that touches it: three times the entries.) Front
+//    vertices are listed in their leaf, whose closed box holds them: the
+//    leaf containing them, or for a core vertex the leaf that templated
+//    it. Both lists are doubly linked head/next lists in flat
 //    arrays (face entries come from a pool with a free list).
 // Every change stamps the leaves whose lists changed with a change counter,
 // so callers can tell whether the front near a place changed since a time.
@@ -29,9 +34,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
+#include "core/flat_hash_map.hpp"
 #include "front/initial_front.hpp"
 #include "octree/octree.hpp"
 #include "octree/range_query.hpp"
@@ -64,8 +69,9 @@ class Front {
   size_t num_alive_faces() const { return alive_count_; }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
   const uint32_t* face(uint32_t f) const { return &faces_[3 * size_t{f}]; }
-  // The face's bounding box: min xyz, then max xyz.
-  const double* face_box(uint32_t f) const { return &face_boxes_[6 * size_t{f}]; }
+  // The face's bounding box, min xyz then max xyz, in floats rounded
+  // outwards: it holds the exact box (a filter, never a decision).
+  const float* face_box(uint32_t f) const { return &face_boxes_[6 * size_t{f}]; }
 
   // The alive face with vertices {a, b, c} in any order, or kNoIndex.
   uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
@@ -109,6 +115,13 @@ class Front {
   // Removes the last vertex, which no face may have used (undoes add_vertex).
   void remove_last_vertex();
 
+  // Drops the closed face slots and the free leaf-list entries, renumbering
+  // the alive faces in their order (so every list keeps its order and
+  // every order by face index stays), and gives the memory back. Returns
+  // the new index of every old face slot (kNoIndex for a closed face).
+  // Face indices held elsewhere must be mapped through it.
+  std::vector<uint32_t> compact();
+
   // Applies the positively oriented tet (a, b, c, p) built on alive face f
   // = (a, b, c) (orient3d(a, b, c, p) > 0 is the caller's check): closes f;
   // each of the new faces (b, c, p), (a, p, c), (a, b, p) (oriented away
@@ -149,7 +162,7 @@ class Front {
 
   std::vector<uint32_t> faces_;
   std::vector<uint8_t> alive_;
-  std::vector<double> face_boxes_;  // 6 per face slot
+  std::vector<float> face_boxes_;  // 6 per face slot
   std::vector<uint32_t> face_first_entry_;  // chain of the face's entries via entry_chain_
   size_t alive_count_ = 0;
 
@@ -165,11 +178,16 @@ class Front {
   std::vector<uint64_t> leaf_changed_;
   uint64_t changes_ = 0;
 
-  struct TripleHash {
-    size_t operator()(const std::array<uint32_t, 3>& k) const;
+  struct TripleTraits {
+    static std::array<uint32_t, 3> empty() { return {kNoIndex, kNoIndex, kNoIndex}; }
+    static uint64_t hash(const std::array<uint32_t, 3>& k);
   };
-  std::unordered_map<std::array<uint32_t, 3>, uint32_t, TripleHash> face_of_triple_;
-  std::unordered_map<uint64_t, uint32_t> edge_uses_;
+  struct EdgeTraits {
+    static uint64_t empty() { return UINT64_MAX; }
+    static uint64_t hash(uint64_t k);
+  };
+  FlatHashMap<std::array<uint32_t, 3>, uint32_t, TripleTraits> face_of_triple_;
+  FlatHashMap<uint64_t, uint32_t, EdgeTraits> edge_uses_;
 };
 
 }  // namespace partet

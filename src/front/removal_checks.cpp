@@ -17,7 +17,7 @@ struct Box {
 };
 
 // Box b against the box stored at `stored` (min xyz, max xyz).
-bool box_meets_stored(const Box& b, const double* stored) {
+bool box_meets_stored(const Box& b, const float* stored) {
   for (int k = 0; k < 3; ++k)
     if (b.hi[k] < stored[k] || stored[3 + k] < b.lo[k]) return false;
   return true;
@@ -163,7 +163,7 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     side_box[k] = box_of(sp, 3);
   }
   for (uint32_t g : near.faces) {
-    const double* face_box = front.face_box(g);
+    const float* face_box = front.face_box(g);
     if (!box_meets_stored(tet_box, face_box)) continue;
     const uint32_t* t = front.face(g);
     for (int k = 0; k < 3; ++k) {

@@ -29,21 +29,43 @@ std::string read_file_bytes(const std::string& path) {
 }
 
 void write_file_atomic(const std::string& path, std::string_view bytes) {
-  std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot write: " + std::strerror(errno));
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw InputError(path + ": cannot write: " + std::strerror(errno));
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    int err = errno;
-    std::remove(tmp.c_str());
-    throw InputError(path + ": cannot write: " + std::strerror(err));
+  AtomicFile file(path);
+  file.write(bytes);
+  file.commit();
+}
+
+AtomicFile::AtomicFile(const std::string& path) : path_(path), tmp_(path + ".partial") {
+  file_ = std::fopen(tmp_.c_str(), "wb");
+  if (!file_) throw InputError(path_ + ": cannot write: " + std::strerror(errno));
+}
+
+AtomicFile::~AtomicFile() {
+  if (!file_) return;
+  std::fclose(file_);
+  std::remove(tmp_.c_str());
+}
+
+void AtomicFile::fail(int err) {
+  std::fclose(file_);
+  file_ = nullptr;
+  std::remove(tmp_.c_str());
+  throw InputError(path_ + ": cannot write: " + std::strerror(err));
+}
+
+void AtomicFile::write(std::string_view bytes) {
+  PARTET_ASSERT(file_, "writing a committed file");
+  if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file_) != bytes.size()) fail(errno);
+}
+
+void AtomicFile::commit() {
+  PARTET_ASSERT(file_, "committing a file twice");
+  if (std::fflush(file_) != 0) fail(errno);
+  const int closed = std::fclose(file_);
+  file_ = nullptr;
+  if (closed != 0 || std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp_.c_str());
+    throw InputError(path_ + ": cannot write: " + std::strerror(err));
   }
 }
 

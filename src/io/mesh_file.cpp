@@ -90,7 +90,12 @@ void write_volume_file(const TetMesh& mesh, const std::string& path, const Write
   std::string ext = file_extension(path);
   if (ext == "mesh") return write_file_atomic(path, format_medit(mesh));
   if (ext == "msh") return write_file_atomic(path, format_gmsh(mesh, !options.ascii));
-  if (ext == "vtu") return write_file_atomic(path, format_vtu(mesh));
+  if (ext == "vtu") {
+    AtomicFile file(path);
+    write_vtu(mesh, [&](std::string_view bytes) { file.write(bytes); });
+    file.commit();
+    return;
+  }
   std::string piece = pvtu_piece_path(path, 0);
   write_file_atomic(piece, format_vtu(mesh));
   write_file_atomic(path, format_pvtu({file_basename(piece)}, !mesh.global_ids.empty()));

@@ -1,12 +1,13 @@
 // Parsers and writers of the mesh formats (Medit .mesh, Gmsh .msh 4.1, VTK
 // .vtu/.pvtu). A parse returns vertices, triangles and tets in a TetMesh
-// (0-based indices). Writers return the file's bytes; callers write them
-// atomically. Coordinates round-trip exactly (17 significant digits in text).
+// (0-based indices). Writers return the file's bytes (the .vtu writer can
+// also stream them); callers write them atomically. Coordinates round-trip exactly (17 significant digits in text).
 // Malformed input throws InputError naming the file and the line (text) or
 // byte offset (binary, XML); counts are checked against the bytes present
 // before anything is allocated, so hostile input cannot exhaust memory.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,9 @@ std::string format_gmsh(const TetMesh& mesh, bool binary);
 // is written when global_ids is set, and read when present.
 TetMesh parse_vtu(std::string_view bytes, const std::string& file);
 std::string format_vtu(const TetMesh& mesh);
+// The same text handed to `sink` in pieces of about a megabyte, so a large
+// mesh is written without its whole file in memory.
+void write_vtu(const TetMesh& mesh, const std::function<void(std::string_view)>& sink);
 
 // Parallel index: lists piece files (relative paths as written).
 std::vector<std::string> parse_pvtu_pieces(std::string_view bytes, const std::string& file);

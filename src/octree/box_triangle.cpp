@@ -11,8 +11,13 @@ namespace partet {
 
 namespace {
 
-bool point_in_box(const double* p, const double* lo, const double* hi) {
-  return p[0] >= lo[0] && p[0] <= hi[0] && p[1] >= lo[1] && p[1] <= hi[1] && p[2] >= lo[2] && p[2] <= hi[2];
+// p in [lo, hi], or [lo, hi) on the axes marked in `open` (nullptr: none).
+bool point_in_box(const double* p, const double* lo, const double* hi, const bool* open) {
+  for (int i = 0; i < 3; ++i) {
+    if (p[i] < lo[i] || p[i] > hi[i]) return false;
+    if (open && open[i] && p[i] == hi[i]) return false;
+  }
+  return true;
 }
 
 // The 8 corners of box [lo, hi]; corner k takes hi on axis i iff bit i of k.
@@ -40,15 +45,22 @@ void kept_axes(int drop, int& i, int& j) {
 // (-(q_j - p_j), q_i - p_i); true when the box's projection lies strictly on
 // the side of line pq given by `side` (+1 or -1), tested at its extreme
 // corner only.
-bool box_strictly_on_side(const double* p, const double* q, const double corner[8][3], int drop, int side) {
+// With `open` (see box_meets_triangle_impl), the box's upper faces on the
+// open axes are pulled in by an infinitesimal: a corner coordinate taking
+// hi where the gradient is negative raises side * orient2d, so a zero
+// counts as strictly on the side.
+bool box_strictly_on_side(const double* p, const double* q, const double corner[8][3], int drop, int side,
+                          const bool* open) {
   int i, j;
   kept_axes(drop, i, j);
   int g[3] = {0, 0, 0};
   g[i] = -sign_of_difference(q[j], p[j]) * side;
   g[j] = sign_of_difference(q[i], p[i]) * side;
   // The corner where side * orient2d is smallest (the dropped axis does not
-  // matter).
-  return orient2d_projected(p, q, corner[7 ^ max_corner(g)], drop) == side;
+  // matter); it takes hi exactly where g <= 0.
+  const int o = orient2d_projected(p, q, corner[7 ^ max_corner(g)], drop);
+  if (o == side) return true;
+  return o == 0 && open && ((open[i] && g[i] < 0) || (open[j] && g[j] < 0));
 }
 
 double clamp_gap(double v, double lo, double hi) { return v < lo ? lo - v : (v > hi ? v - hi : 0.0); }
@@ -153,23 +165,40 @@ double segment_segment_dist2(const double* p1, const double* q1, const double* p
   return dist2(x1, x2);
 }
 
-}  // namespace
-
-bool box_meets_triangle(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
+// The separating-axis test of box_triangle.hpp. `open` (nullptr: none)
+// marks the axes whose upper face is left out of the box: the box is then
+// [lo, hi - eps] on those axes for an infinitesimal eps > 0, which meets the
+// triangle exactly when [lo, hi) does. Every quantity tested is linear in
+// eps, so a test reads the constant term and, where it is zero, the sign
+// of the eps term: upper bounds become strict, and a corner predicate that
+// is zero decides by which of its coordinates take a pulled-in hi.
+bool box_meets_triangle_impl(const double* lo, const double* hi, const bool* open, const double* a,
+                             const double* b, const double* c) {
   for (int i = 0; i < 3; ++i) {
-    if (std::max({a[i], b[i], c[i]}) < lo[i] || std::min({a[i], b[i], c[i]}) > hi[i]) return false;
+    const double tlo = std::min({a[i], b[i], c[i]});
+    if (std::max({a[i], b[i], c[i]}) < lo[i] || tlo > hi[i] || (open && open[i] && tlo == hi[i])) return false;
   }
-  if (point_in_box(a, lo, hi) || point_in_box(b, lo, hi) || point_in_box(c, lo, hi)) return true;
+  if (point_in_box(a, lo, hi, open) || point_in_box(b, lo, hi, open) || point_in_box(c, lo, hi, open)) return true;
   double corner[8][3];
   box_corners(lo, hi, corner);
   // normal[k]: sign of component k of (b - a) x (c - a), which is also the
   // orientation of the triangle projected along axis k.
   int normal[3];
   for (int k = 0; k < 3; ++k) normal[k] = orient2d_projected(a, b, c, k);
-  // The triangle's plane: orient3d(a, b, c, d) grows along the normal.
+  // The triangle's plane: orient3d(a, b, c, d) grows along the normal. The
+  // top corner takes hi where normal > 0 (pulling those in lowers it), the
+  // bottom one where normal <= 0 (pulling in raises it where normal < 0).
   const int top = max_corner(normal);
   const int bottom = 7 ^ top;
-  if (orient3d(a, b, c, corner[top]) < 0 || orient3d(a, b, c, corner[bottom]) > 0) return false;
+  bool top_drops = false, bottom_rises = false;
+  for (int k = 0; k < 3 && open; ++k) {
+    top_drops = top_drops || (open[k] && normal[k] > 0);
+    bottom_rises = bottom_rises || (open[k] && normal[k] < 0);
+  }
+  const int o_top = orient3d(a, b, c, corner[top]);
+  if (o_top < 0 || (o_top == 0 && top_drops)) return false;
+  const int o_bottom = orient3d(a, b, c, corner[bottom]);
+  if (o_bottom > 0 || (o_bottom == 0 && bottom_rises)) return false;
   const double* v[3] = {a, b, c};
   for (int drop = 0; drop < 3; ++drop) {
     int i, j;
@@ -180,13 +209,25 @@ bool box_meets_triangle(const double* lo, const double* hi, const double* a, con
       if (p[i] == q[i] && p[j] == q[j]) continue;  // the edge projects to a point: no axis
       if (normal[drop] != 0) {
         // The triangle is on side normal[drop] of each of its edges.
-        if (box_strictly_on_side(p, q, corner, drop, -normal[drop])) return false;
-      } else if (box_strictly_on_side(p, q, corner, drop, 1) || box_strictly_on_side(p, q, corner, drop, -1)) {
+        if (box_strictly_on_side(p, q, corner, drop, -normal[drop], open)) return false;
+      } else if (box_strictly_on_side(p, q, corner, drop, 1, open) ||
+                 box_strictly_on_side(p, q, corner, drop, -1, open)) {
         return false;
       }
     }
   }
   return true;
+}
+
+}  // namespace
+
+bool box_meets_triangle(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
+  return box_meets_triangle_impl(lo, hi, nullptr, a, b, c);
+}
+
+bool box_meets_triangle_half_open(const double* lo, const double* hi, const bool* open, const double* a,
+                                  const double* b, const double* c) {
+  return box_meets_triangle_impl(lo, hi, open, a, b, c);
 }
 
 bool box_triangle_closer_than(const double* lo, const double* hi, const double* a, const double* b,

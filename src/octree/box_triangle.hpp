@@ -27,6 +27,14 @@ namespace partet {
 // (non-degenerate: the vertices are not collinear). Exact.
 bool box_meets_triangle(const double* lo, const double* hi, const double* a, const double* b, const double* c);
 
+// The same for the box with its upper face left out on the axes where
+// open[k] is true: [lo_k, hi_k) there, [lo_k, hi_k] elsewhere (lo < hi on
+// the open axes). Exact: the closed test on [lo, hi - eps] for an
+// infinitesimal eps > 0 (symbolic perturbation). Half-open leaf boxes
+// tile the root cube, so a point lies in exactly one of them.
+bool box_meets_triangle_half_open(const double* lo, const double* hi, const bool* open, const double* a,
+                                  const double* b, const double* c);
+
 // Euclidean distance between closed box [lo, hi] and triangle abc is below
 // r, in floating point (a heuristic, not exact). Precondition: the box and
 // the triangle are disjoint; the distance is then realised by a triangle

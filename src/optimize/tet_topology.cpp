@@ -1,5 +1,5 @@
-// TetTopology (see tet_topology.hpp). Adjacency is built once by sorting the
-// faces on their sorted vertex triples; replace() relinks only the faces of
+// TetTopology (see tet_topology.hpp). Adjacency is built once from the
+// tets of each vertex; replace() relinks only the faces of
 // the new tets, matching them among themselves and against the cavity's
 // outer faces by linear search (a cavity has at most a few dozen faces).
 #include "optimize/tet_topology.hpp"
@@ -40,23 +40,43 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   twin_.assign(4 * static_cast<size_t>(n), kNone);
   vertex_tet_.assign(mesh_.num_vertices(), kNone);
   mark_.assign(n, 0);
-  struct Face {
-    FaceKey key;
-    uint32_t code;
-  };
-  std::vector<Face> faces(4 * static_cast<size_t>(n));
-  for (uint32_t t = 0; t < n; ++t) {
-    for (int f = 0; f < 4; ++f) faces[4 * t + f] = {face_key(tet(t), f), 4 * t + f};
-    for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
+  // The tets of every vertex (ascending), then each face's twin among the
+  // tets of its smallest vertex: 16 bytes per tet, where sorting the faces
+  // took 64.
+  std::vector<uint32_t> first(mesh_.num_vertices() + 1, 0);
+  for (uint32_t v : mesh_.tets) ++first[v + 1];
+  for (size_t v = 0; v < mesh_.num_vertices(); ++v) first[v + 1] += first[v];
+  std::vector<uint32_t> tets_of(first.back());
+  {
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (uint32_t t = 0; t < n; ++t)
+      for (int k = 0; k < 4; ++k) {
+        const uint32_t v = tet(t)[k];
+        tets_of[fill[v]++] = t;
+        vertex_tet_[v] = t;
+      }
   }
-  std::sort(faces.begin(), faces.end(),
-            [](const Face& x, const Face& y) { return x.key != y.key ? x.key < y.key : x.code < y.code; });
-  for (size_t i = 0; i < faces.size();) {
-    size_t j = i;
-    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
-    PARTET_ASSERT(j - i <= 2, "a face of the mesh to optimize is shared by more than two tets");
-    if (j - i == 2) link(faces[i].code, faces[i + 1].code);
-    i = j;
+  for (uint32_t t = 0; t < n; ++t) {
+    const uint32_t* vt = tet(t);
+    for (int f = 0; f < 4; ++f) {
+      if (twin_[4 * t + f] != kNone) continue;
+      const FaceKey key = face_key(vt, f);
+      uint32_t match = kNone;
+      for (uint32_t i = first[key[0]]; i < first[key[0] + 1]; ++i) {
+        const uint32_t u = tets_of[i];
+        if (u == t) continue;
+        const uint32_t* vu = tet(u);
+        if (local_index(vu, key[1]) < 0 || local_index(vu, key[2]) < 0) continue;
+        PARTET_ASSERT(match == kNone, "a face of the mesh to optimize is shared by more than two tets");
+        match = u;
+      }
+      if (match == kNone) continue;
+      const uint32_t* vu = tet(match);
+      int g = 0;
+      while (vu[g] == key[0] || vu[g] == key[1] || vu[g] == key[2]) ++g;
+      PARTET_ASSERT(twin_[4 * match + g] == kNone, "a face of the mesh to optimize is shared by more than two tets");
+      link(4 * t + f, 4 * match + g);
+    }
   }
 }
 

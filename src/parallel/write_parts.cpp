@@ -65,6 +65,10 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
     });
     return;
   }
+  if (comm.size() == 1) {
+    collective_step(comm, [&] { write_volume_file(part, path, options); });
+    return;
+  }
   std::vector<std::string> images = comm.gather(serialize_part(part), 0);
   collective_step(comm, [&] {
     if (comm.rank() != 0) return;

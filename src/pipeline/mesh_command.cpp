@@ -115,6 +115,20 @@ std::vector<uint32_t> boundary_triangles(const MeshState& s) {
   return tris;
 }
 
+// Frees everything but the mesh and the surface summary.
+void release_build_state(MeshState& s) {
+  s.surface = SurfaceMesh{};
+  s.sizing = VertexSizing{};
+  s.tree = LinearOctree{};
+  s.core = TemplateCore{};
+  s.own = DistributedOctree{};
+  s.view = LinearOctree{};
+  s.part = TemplateCore{};
+  s.links = VertexLinks{};
+  s.boundary = BoundaryPartition{};
+  s.initial_front = InitialFront{};
+}
+
 // The alive faces of `front` as a surface (vertices compacted).
 SurfaceMesh front_left(const Front& front) {
   SurfaceMesh left;
@@ -418,6 +432,9 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         const RemovalCounts first = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, shaped);
         const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, {}, nullptr, &memo);
         ojson c;
+        // The closed faces (most slots by now) go before the tree-less
+        // removals allocate theirs.
+        memo.renumber(front->compact());
         c["tets"] = first.tets + n.tets;
         c["faces left"] = n.faces_left;
         c["passes"] = first.passes + n.passes;
@@ -466,6 +483,14 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         s.mesh.tris = boundary_triangles(s);
         drop_unused_vertices(s.mesh);
       }
+      // Only the mesh goes on: what built it is freed before the optimizer
+      // and the writer allocate theirs. The mesh is whole on rank 0, so its
+      // own numbering is global: the front's global ids go too.
+      s.mesh.global_ids = {};
+      front.reset();
+      memo = RemovalMemo{};
+      left = SurfaceMesh{};
+      release_build_state(s);
       if (options.optimize_passes > 0) {
         report.run_step("optimize", [&] {
           if (!root_rank) return ojson::object();

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "core/intersections.hpp"
 #include "octree/box_triangle.hpp"
@@ -139,6 +140,66 @@ TEST(OctreeBoxTriangle, MatchesReferenceOnRandomTriangles) {
     const double lo[3] = {0, 0.25, 0.5}, hi[3] = {0.5, 0.75, 1};
     ASSERT_EQ(box_meets_triangle(lo, hi, v[0], v[1], v[2]), reference_meets(lo, hi, v[0], v[1], v[2])) << k;
   }
+}
+
+// Half-open boxes: on lattice coordinates (multiples of 1/4 in [-1, 2]) every
+// predicate value is a multiple of 2^-12 at least, so pulling the open
+// upper faces in by 2^-30 changes no nonzero sign: the closed test on that
+// box is the reference.
+TEST(OctreeBoxTriangle, HalfOpenMatchesShrunkClosedBoxOnLatticeTriangles) {
+  const double values[] = {-1, -0.5, 0, 0.25, 0.5, 1, 1.5, 2};
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> pick(0, 7), coin(0, 1);
+  int differ = 0, total = 0;
+  for (int k = 0; k < 60000; ++k) {
+    double v[3][3];
+    for (auto& p : v)
+      for (double& x : p) x = values[pick(rng)];
+    if (points_collinear(v[0], v[1], v[2])) continue;
+    const bool open[3] = {coin(rng) == 1, coin(rng) == 1, coin(rng) == 1};
+    double shrunk[3];
+    for (int i = 0; i < 3; ++i) shrunk[i] = open[i] ? kHi[i] - std::ldexp(1.0, -30) : kHi[i];
+    const bool got = box_meets_triangle_half_open(kLo, kHi, open, v[0], v[1], v[2]);
+    ASSERT_EQ(got, box_meets_triangle(kLo, shrunk, v[0], v[1], v[2])) << k;
+    differ += got != box_meets_triangle(kLo, kHi, v[0], v[1], v[2]);
+    ++total;
+  }
+  // Plenty of triangles touch only the open faces.
+  EXPECT_GT(differ, total / 50);
+}
+
+// The 8 half-open octants of a cube tile it, so a triangle meets exactly
+// the octants its points fall in, where closed octants also count every
+// touch of a common plane, edge or corner.
+std::vector<int> octants_met(const double* a, const double* b, const double* c, bool half_open) {
+  const bool open[3] = {true, true, true};
+  std::vector<int> met;
+  for (int k = 0; k < 8; ++k) {
+    double lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = (k >> i & 1) ? 0.5 : 0;
+      hi[i] = lo[i] + 0.5;
+    }
+    if (half_open ? box_meets_triangle_half_open(lo, hi, open, a, b, c) : box_meets_triangle(lo, hi, a, b, c))
+      met.push_back(k);
+  }
+  return met;
+}
+
+TEST(OctreeBoxTriangle, HalfOpenOctantsCountEachPointOnce) {
+  // In the common plane x = 1/2, away from the other planes: octant 1 only.
+  const double a[3] = {0.5, 0.125, 0.125}, b[3] = {0.5, 0.375, 0.125}, c[3] = {0.5, 0.125, 0.375};
+  EXPECT_EQ(octants_met(a, b, c, false), (std::vector<int>{0, 1}));
+  EXPECT_EQ(octants_met(a, b, c, true), (std::vector<int>{1}));
+  // Inside octant 0 but for one vertex on the common corner, which is in
+  // octant 7.
+  const double p[3] = {0.5, 0.5, 0.5}, q[3] = {0.125, 0.25, 0.25}, r[3] = {0.25, 0.125, 0.25};
+  EXPECT_EQ(octants_met(p, q, r, false), (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+  EXPECT_EQ(octants_met(p, q, r, true), (std::vector<int>{0, 7}));
+  // Along the common edge x = y = 1/2 with the rest in x, y < 1/2: the edge's
+  // points are in octants 3 (z < 1/2) and 7.
+  const double e[3] = {0.5, 0.5, 0.25}, f[3] = {0.5, 0.5, 0.75}, g[3] = {0.25, 0.125, 0.5};
+  EXPECT_EQ(octants_met(e, f, g, true), (std::vector<int>{0, 3, 4, 7}));
 }
 
 // Distance from the box to the triangle sampled on a barycentric grid: an
