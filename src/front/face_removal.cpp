@@ -18,7 +18,7 @@ namespace partet {
 
 namespace {
 
-constexpr uint64_t kNeverFailed = std::numeric_limits<uint64_t>::max();
+constexpr uint32_t kNeverFailed = std::numeric_limits<uint32_t>::max();
 // Targets a face tries in a capped pass: three quarters of the faces take
 // their first target, and a face whose first 8 fail rarely succeeds soon.
 constexpr size_t kCappedTargets = 8;
@@ -256,14 +256,16 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
         foreign_[f] = 1;
         continue;
       }
-      std::vector<uint64_t>& failed_at = full ? memo_.failed_full_at : memo_.failed_capped_at;
+      std::vector<uint32_t>& failed_at = full ? memo_.failed_full_at : memo_.failed_capped_at;
       if (failed_at[f] != kNeverFailed && !neighbourhood_changed_since(failed_at[f])) {
         waiting.push_back(f);
         continue;
       }
       if (!try_face(f, full)) {
-        memo_.failed_capped_at[f] = front_.changes();
-        if (full) memo_.failed_full_at[f] = front_.changes();
+        PARTET_ASSERT(front_.changes() < kNeverFailed, "more front changes than the memo can stamp");
+        const uint32_t now = static_cast<uint32_t>(front_.changes());
+        memo_.failed_capped_at[f] = now;
+        if (full) memo_.failed_full_at[f] = now;
         waiting.push_back(f);
       }
     }
@@ -287,8 +289,8 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
 }  // namespace
 
 void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
-  for (std::vector<uint64_t>* at : {&failed_capped_at, &failed_full_at}) {
-    std::vector<uint64_t> kept;
+  for (std::vector<uint32_t>* at : {&failed_capped_at, &failed_full_at}) {
+    std::vector<uint32_t> kept;
     for (size_t f = 0; f < new_face.size() && f < at->size(); ++f)
       if (new_face[f] != kNoIndex) {
         PARTET_ASSERT(new_face[f] == kept.size(), "face renumbering out of order");

@@ -36,9 +36,9 @@
 // Deterministic: no hash iteration, ties broken by index.
 #pragma once
 
-#include <vector>
-
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "core/tet_mesh.hpp"
 #include "front/front.hpp"
@@ -65,7 +65,7 @@ struct RemovalOptions {
 // min_quality starts it afresh.
 struct RemovalMemo {
   double min_quality = 0;
-  std::vector<uint64_t> failed_capped_at, failed_full_at;
+  std::vector<uint32_t> failed_capped_at, failed_full_at;  // 32 bits: 4e9 tets are far beyond one rank
 
   // Follows Front::compact: `new_face` maps old face slots to new ones.
   void renumber(const std::vector<uint32_t>& new_face);

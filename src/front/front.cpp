@@ -3,7 +3,6 @@
 #include "front/front.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "core/error.hpp"
 #include "octree/box_triangle.hpp"
@@ -30,17 +29,6 @@ uint64_t mix(uint64_t h) {
   h ^= h >> 27;
   h *= 0x94D049BB133111EBull;
   return h ^ (h >> 31);
-}
-
-// The nearest float at or below x, at or above x: a float box rounded
-// outwards holds the double box.
-float float_below(double x) {
-  float f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
-}
-float float_above(double x) {
-  float f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
 }
 
 }  // namespace
@@ -70,7 +58,6 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
   const size_t n = initial.num_faces();
   faces_.reserve(3 * n);
   alive_.reserve(n);
-  face_boxes_.reserve(6 * n);
   // A closed front has 3/2 edges per face; both tables shrink from here.
   face_of_triple_.reserve(n);
   edge_uses_.reserve(n + n / 2);
@@ -146,8 +133,6 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
     lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
     hi[k] = std::max({point(a)[k], point(b)[k], point(c)[k]});
   }
-  face_boxes_.insert(face_boxes_.end(), {float_below(lo[0]), float_below(lo[1]), float_below(lo[2]),
-                                         float_above(hi[0]), float_above(hi[1]), float_above(hi[2])});
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
   query_.leaves_in_range(glo, ghi, leaves_scratch_);
@@ -290,12 +275,10 @@ std::vector<uint32_t> Front::compact() {
   const auto entry_of = [&](uint32_t e) { return e == kNoIndex ? kNoIndex : new_entry[e]; };
 
   std::vector<uint32_t> faces(3 * size_t{n}), first_entry(n);
-  std::vector<float> boxes(6 * size_t{n});
   for (uint32_t f = 0; f < alive_.size(); ++f) {
     if (new_face[f] == kNoIndex) continue;
     const size_t g = new_face[f];
     std::copy_n(&faces_[3 * size_t{f}], 3, &faces[3 * g]);
-    std::copy_n(&face_boxes_[6 * size_t{f}], 6, &boxes[6 * g]);
     first_entry[g] = entry_of(face_first_entry_[f]);
   }
   std::vector<uint32_t> entry_face(m), entry_leaf(m), entry_prev(m), entry_next(m), entry_chain(m);
@@ -310,7 +293,6 @@ std::vector<uint32_t> Front::compact() {
   }
   for (uint32_t& head : leaf_entry_head_) head = entry_of(head);
   faces_.swap(faces);
-  face_boxes_.swap(boxes);
   face_first_entry_.swap(first_entry);
   alive_.assign(n, 1);
   alive_.shrink_to_fit();

@@ -69,9 +69,6 @@ class Front {
   size_t num_alive_faces() const { return alive_count_; }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
   const uint32_t* face(uint32_t f) const { return &faces_[3 * size_t{f}]; }
-  // The face's bounding box, min xyz then max xyz, in floats rounded
-  // outwards: it holds the exact box (a filter, never a decision).
-  const float* face_box(uint32_t f) const { return &face_boxes_[6 * size_t{f}]; }
 
   // The alive face with vertices {a, b, c} in any order, or kNoIndex.
   uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
@@ -162,7 +159,6 @@ class Front {
 
   std::vector<uint32_t> faces_;
   std::vector<uint8_t> alive_;
-  std::vector<float> face_boxes_;  // 6 per face slot
   std::vector<uint32_t> face_first_entry_;  // chain of the face's entries via entry_chain_
   size_t alive_count_ = 0;
 

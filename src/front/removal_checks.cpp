@@ -16,13 +16,6 @@ struct Box {
   double lo[3], hi[3];
 };
 
-// Box b against the box stored at `stored` (min xyz, max xyz).
-bool box_meets_stored(const Box& b, const float* stored) {
-  for (int k = 0; k < 3; ++k)
-    if (b.hi[k] < stored[k] || stored[3 + k] < b.lo[k]) return false;
-  return true;
-}
-
 bool boxes_meet(const Box& x, const Box& y) {
   for (int k = 0; k < 3; ++k)
     if (x.hi[k] < y.lo[k] || y.hi[k] < x.lo[k]) return false;
@@ -163,11 +156,12 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     side_box[k] = box_of(sp, 3);
   }
   for (uint32_t g : near.faces) {
-    const float* face_box = front.face_box(g);
-    if (!box_meets_stored(tet_box, face_box)) continue;
     const uint32_t* t = front.face(g);
+    const double* tp[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
+    const Box face_box = box_of(tp, 3);
+    if (!boxes_meet(tet_box, face_box)) continue;
     for (int k = 0; k < 3; ++k) {
-      if (!new_edge[k] || !box_meets_stored(edge_box[k], face_box)) continue;
+      if (!new_edge[k] || !boxes_meet(edge_box[k], face_box)) continue;
       if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
     }
     if (!any_new_side) continue;
