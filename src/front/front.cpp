@@ -11,10 +11,10 @@ namespace partet {
 
 namespace {
 
-std::array<uint32_t, 3> sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
-  std::array<uint32_t, 3> k = {a, b, c};
-  std::sort(k.begin(), k.end());
-  return k;
+void sort3(uint32_t& a, uint32_t& b, uint32_t& c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
 }
 
 uint64_t edge_key(uint32_t a, uint32_t b) {
@@ -33,8 +33,11 @@ uint64_t mix(uint64_t h) {
 
 }  // namespace
 
-uint64_t Front::TripleTraits::hash(const std::array<uint32_t, 3>& k) {
-  return mix((uint64_t{k[0]} << 32 | k[1]) ^ mix(k[2]));
+uint64_t Front::TripleTraits::hash(const Triple& k) { return mix((uint64_t{k.a} << 32 | k.b) ^ mix(k.c)); }
+
+Front::Triple Front::sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
+  sort3(a, b, c);
+  return {a, b, c};
 }
 
 uint64_t Front::EdgeTraits::hash(uint64_t k) { return mix(k); }
