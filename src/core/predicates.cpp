@@ -152,6 +152,30 @@ int insphere_exact(const double* const* p) {
   return insphere_formula(rows[0], rows[1], rows[2], rows[3]).sign();
 }
 
+// Coordinates that are integers below 2^kSmallIntegerBits in units of
+// 2^low (lattice points such as the templated core's, whose coplanar
+// quadruples are common) take 128-bit integer arithmetic: differences
+// below 2^41, 2x2 minors below 2^83, the determinant below 2^126.
+constexpr int kSmallIntegerBits = 40;
+
+__extension__ typedef __int128 Int128;
+
+int orient3d_small_integers(const double* const* p, int low) {
+  int64_t m[4][3];
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) m[i][k] = static_cast<int64_t>(std::ldexp(p[i][k], -low));
+  int64_t u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    u[k] = m[1][k] - m[0][k];
+    v[k] = m[2][k] - m[0][k];
+    w[k] = m[3][k] - m[0][k];
+  }
+  const Int128 det = u[0] * (Int128{v[1]} * w[2] - Int128{v[2]} * w[1]) +
+                     u[1] * (Int128{v[2]} * w[0] - Int128{v[0]} * w[2]) +
+                     u[2] * (Int128{v[0]} * w[1] - Int128{v[1]} * w[0]);
+  return (det > 0) - (det < 0);
+}
+
 }  // namespace
 
 namespace detail {
@@ -179,6 +203,7 @@ int orient3d_exact(const double* a, const double* b, const double* c, const doub
   const double* p[4] = {a, b, c, d};
   const ExponentRange range = exponent_range(p, 4, 3);
   if (range.high == INT_MIN) return 0;
+  if (range.high - range.low <= kSmallIntegerBits) return orient3d_small_integers(p, range.low);
   int shift;
   if (window_shift(range, kOrient3dWindow, shift)) {
     double s[4][3];

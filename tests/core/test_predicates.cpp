@@ -342,6 +342,31 @@ TEST(Predicates, Orient3dScaleInvarianceAcrossExponents) {
   }
 }
 
+TEST(Predicates, Orient3dLargeLatticeIntegers) {
+  // Integers up to 2^40 in units of 2^k (the 128-bit path's widest case),
+  // exactly coplanar or off by one unit, against the reference.
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<int64_t> v(-(int64_t{1} << 38), int64_t{1} << 38);
+  std::uniform_int_distribution<int> nudge(-1, 1);
+  int zeros = 0;
+  for (int n = 0; n < 3000; ++n) {
+    double p[4][3];
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) p[i][c] = static_cast<double>(v(rng) | 1);
+    for (int c = 0; c < 3; ++c) p[3][c] = p[1][c] + p[2][c] - p[0][c] + nudge(rng);
+    const int expected = ref_orient3d(p[0], p[1], p[2], p[3]);
+    zeros += expected == 0;
+    for (int k : {-60, 0, 37}) {
+      double s[4][3];
+      for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c) s[i][c] = std::ldexp(p[i][c], k);
+      ASSERT_EQ(orient3d(s[0], s[1], s[2], s[3]), expected) << n << " k=" << k;
+      ASSERT_EQ(orient3d(s[1], s[0], s[2], s[3]), -expected) << n << " k=" << k;
+    }
+  }
+  EXPECT_GT(zeros, 0);
+}
+
 TEST(Predicates, MixedExponentsMatchReference) {
   // Coordinates spanning far more binary orders than expansions can hold
   // (big integer path), near-degenerate by construction.
