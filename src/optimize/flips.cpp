@@ -35,7 +35,7 @@ void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
 
 }  // namespace
 
-bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip) {
+bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double* beat) {
   const uint32_t other = topo.twin(code);
   if (other == TetTopology::kNone) return false;
   const uint32_t t1 = code / 4, t2 = other / 4;
@@ -45,33 +45,39 @@ bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip) {
   for (int k = 0; k < 3; ++k) face[k] = topo.tet(t1)[kOutwardFace[code % 4][k]];
   flip = Flip{};
   flip.kind = FlipKind::k23;
-  flip.new_quality = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    const uint32_t r0 = face[k], r1 = face[(k + 1) % 3];
-    const double q = positive_quality(topo, d, e, r0, r1);
-    if (q == kInvalid) return false;
-    flip.new_quality = std::min(flip.new_quality, q);
-    add_tet(flip, d, e, r0, r1);
-  }
   flip.old_tets[0] = t1;
   flip.old_tets[1] = t2;
   flip.old_count = 2;
   flip.old_quality = std::min(existing_quality(topo, t1), existing_quality(topo, t2));
+  const double bar = beat ? std::max(*beat, flip.old_quality) : kInvalid;
+  flip.new_quality = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t r0 = face[k], r1 = face[(k + 1) % 3];
+    const double q = positive_quality(topo, d, e, r0, r1);
+    if (q == kInvalid || (beat && q <= bar)) return false;
+    flip.new_quality = std::min(flip.new_quality, q);
+    add_tet(flip, d, e, r0, r1);
+  }
   return true;
 }
 
-bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip) {
+bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip, const double* beat) {
   TetTopology::Ring ring;
   if (!topo.edge_ring(t, i, j, ring)) return false;
   const int n = ring.n;
   const uint32_t* r = ring.vertices;
+  double old_quality = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n; ++k) old_quality = std::min(old_quality, existing_quality(topo, ring.tets[k]));
+  // A sub-polygon whose best is not above `bar` cannot be part of a wanted
+  // triangulation: starting every entry at the bar prunes it.
+  const double bar = beat ? std::max(*beat, old_quality) : kInvalid;
   constexpr int N = TetTopology::kMaxRing;
   double best[N][N];
-  int split[N][N];
+  int split[N][N] = {};
   for (int len = 1; len < n; ++len) {
     for (int lo = 0; lo + len < n; ++lo) {
       const int hi = lo + len;
-      best[lo][hi] = len == 1 ? std::numeric_limits<double>::infinity() : kInvalid;
+      best[lo][hi] = len == 1 ? std::numeric_limits<double>::infinity() : bar;
       split[lo][hi] = -1;
       for (int mid = lo + 1; mid < hi; ++mid) {
         double q = std::min(best[lo][mid], best[mid][hi]);
@@ -85,7 +91,7 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip)
       }
     }
   }
-  if (best[0][n - 1] == kInvalid) return false;
+  if (split[0][n - 1] < 0) return false;
 
   flip = Flip{};
   flip.kind = n == 3 ? FlipKind::k32 : n == 4 ? FlipKind::k44 : FlipKind::kEdgeRemoval;
@@ -105,11 +111,8 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip)
     stack[top++] = mid;
     stack[top++] = hi;
   }
-  flip.old_quality = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < n; ++k) {
-    flip.old_tets[k] = ring.tets[k];
-    flip.old_quality = std::min(flip.old_quality, existing_quality(topo, ring.tets[k]));
-  }
+  flip.old_quality = old_quality;
+  for (int k = 0; k < n; ++k) flip.old_tets[k] = ring.tets[k];
   flip.old_count = n;
   return true;
 }

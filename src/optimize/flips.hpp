@@ -38,10 +38,15 @@ struct Flip {
 
 // The 2-3 flip of face `code` (face code 4*t + f); false on a boundary face
 // or when a new tet would not be positive.
-bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip);
+//
+// With `beat` given, both look only for a flip whose worst new tet is above
+// *beat and above the worst old tet (the only flips the optimizer takes),
+// and return false when there is none: the search prunes everything else
+// (the same flip as without it when there is one).
+bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double* beat = nullptr);
 
 // Removal of the edge (v[i], v[j]) of tet t; false when its ring is open or
 // longer than kMaxRing, or no retriangulation has only positive tets.
-bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip);
+bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip, const double* beat = nullptr);
 
 }  // namespace partet

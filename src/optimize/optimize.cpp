@@ -13,6 +13,7 @@
 #include "optimize/optimize.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 #include "core/error.hpp"
@@ -70,8 +71,16 @@ bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::
       found = true;
     }
   };
-  for (const auto& e : kEdges) consider(edge_removal(topo, t, e[0], e[1], candidate));
-  for (uint32_t f = 0; f < 4; ++f) consider(face_flip(topo, 4 * t + f, candidate));
+  // Each search looks only for flips beating the best one so far.
+  double beat = -std::numeric_limits<double>::infinity();
+  for (const auto& e : kEdges) {
+    consider(edge_removal(topo, t, e[0], e[1], candidate, &beat));
+    if (found) beat = best.new_quality;
+  }
+  for (uint32_t f = 0; f < 4; ++f) {
+    consider(face_flip(topo, 4 * t + f, candidate, &beat));
+    if (found) beat = best.new_quality;
+  }
   if (!found) return false;
   topo.replace(best.cavity(), best.replacement(), created);
   count(best, stats);
