@@ -46,10 +46,21 @@ class Star {
     return true;
   }
   // True when every star tet's quality with v at x exceeds `bar`; stops at
-  // the first that does not. The qualities go to `quality` (complete only
-  // when true).
-  bool all_above(const double* x, double bar, std::vector<double>& quality) const {
+  // the first that does not, trying the tets of `first` (ascending) before
+  // the others: the worst tets are the likeliest to fail. The qualities go
+  // to `quality` (complete only when true).
+  bool all_above(const double* x, double bar, const std::vector<size_t>& first,
+                 std::vector<double>& quality) const {
+    for (size_t k : first) {
+      quality[k] = this->quality(k, x);
+      if (!(quality[k] > bar)) return false;
+    }
+    size_t next_first = 0;
     for (size_t k = 0; k < tets_.size(); ++k) {
+      if (next_first < first.size() && first[next_first] == k) {
+        ++next_first;
+        continue;
+      }
       quality[k] = this->quality(k, x);
       if (!(quality[k] > bar)) return false;
     }
@@ -145,7 +156,7 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     bool improved = false;
     for (int halving = 0; halving < kHalvings && !improved; ++halving, alpha /= 2) {
       const double y[3] = {x[0] + alpha * d[0], x[1] + alpha * d[1], x[2] + alpha * d[2]};
-      if (star.all_above(y, worst, scratch.trial) && star.positive(y)) {
+      if (star.all_above(y, worst, active, scratch.trial) && star.positive(y)) {
         scratch.quality.swap(scratch.trial);
         std::copy_n(y, 3, x);
         improved = true;
