@@ -311,7 +311,7 @@ std::vector<uint32_t> Front::compact() {
   face_of_triple_.reserve(n);
   edge_uses_.reserve(n + n / 2);
   for (uint32_t f = 0; f < n; ++f) {
-    const uint32_t *t = &faces_[3 * size_t{f}];
+    const uint32_t* t = &faces_[3 * size_t{f}];
     face_of_triple_.get_or_insert(sorted_triple(t[0], t[1], t[2]), f);
     change_edge(t[0], t[1], 1);
     change_edge(t[1], t[2], 1);
