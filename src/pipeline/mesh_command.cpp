@@ -465,6 +465,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
+            s.mesh.global_ids = {};  // whole on rank 0: its own numbering is global
             write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
             if (root_rank) write_surface_file(left, partial_front_path(options.output), {});
             ojson c;
