@@ -130,7 +130,12 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
   use_vertex(a);
   use_vertex(b);
   use_vertex(c);
+  list_face(f, true);
+  return f;
+}
 
+void Front::list_face(uint32_t f, bool stamp) {
+  const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) {
     lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
@@ -146,7 +151,8 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
     if (!vertex_leaf) {
       double leaf_lo[3], leaf_hi[3];
       leaf_box(tree_, root_, leaf, leaf_lo, leaf_hi);
-      const bool open[3] = {leaf_hi[0] < root_hi[0], leaf_hi[1] < root_hi[1], leaf_hi[2] < root_hi[2]};
+      const bool open[3] = {!closed_lists_ && leaf_hi[0] < root_hi[0], !closed_lists_ && leaf_hi[1] < root_hi[1],
+                            !closed_lists_ && leaf_hi[2] < root_hi[2]};
       if (!box_meets_triangle_half_open(leaf_lo, leaf_hi, open, point(a), point(b), point(c))) continue;
     }
     uint32_t e;
@@ -170,9 +176,8 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
     leaf_entry_head_[leaf] = e;
     entry_chain_[e] = face_first_entry_[f];
     face_first_entry_[f] = e;
-    leaf_changed_[leaf] = changes_;
+    if (stamp) leaf_changed_[leaf] = changes_;
   }
-  return f;
 }
 
 void Front::close_face(uint32_t f, std::vector<uint32_t>& shrunk) {
@@ -269,42 +274,21 @@ std::vector<uint32_t> Front::compact() {
   uint32_t n = 0;
   for (uint32_t f = 0; f < alive_.size(); ++f)
     if (alive_[f]) new_face[f] = n++;
-  std::vector<uint32_t> new_entry(entry_face_.size(), kNoIndex);
+  std::vector<uint32_t> faces(3 * size_t{n});
   for (uint32_t f = 0; f < alive_.size(); ++f)
-    for (uint32_t e = alive_[f] ? face_first_entry_[f] : kNoIndex; e != kNoIndex; e = entry_chain_[e]) new_entry[e] = 0;
-  uint32_t m = 0;
-  for (uint32_t& e : new_entry)
-    if (e != kNoIndex) e = m++;
-  const auto entry_of = [&](uint32_t e) { return e == kNoIndex ? kNoIndex : new_entry[e]; };
-
-  std::vector<uint32_t> faces(3 * size_t{n}), first_entry(n);
-  for (uint32_t f = 0; f < alive_.size(); ++f) {
-    if (new_face[f] == kNoIndex) continue;
-    const size_t g = new_face[f];
-    std::copy_n(&faces_[3 * size_t{f}], 3, &faces[3 * g]);
-    first_entry[g] = entry_of(face_first_entry_[f]);
-  }
-  std::vector<uint32_t> entry_face(m), entry_leaf(m), entry_prev(m), entry_next(m), entry_chain(m);
-  for (uint32_t e = 0; e < new_entry.size(); ++e) {
-    const uint32_t k = new_entry[e];
-    if (k == kNoIndex) continue;
-    entry_face[k] = new_face[entry_face_[e]];
-    entry_leaf[k] = entry_leaf_[e];
-    entry_prev[k] = entry_of(entry_prev_[e]);
-    entry_next[k] = entry_of(entry_next_[e]);
-    entry_chain[k] = entry_of(entry_chain_[e]);
-  }
-  for (uint32_t& head : leaf_entry_head_) head = entry_of(head);
+    if (new_face[f] != kNoIndex) std::copy_n(&faces_[3 * size_t{f}], 3, &faces[3 * size_t{new_face[f]}]);
   faces_.swap(faces);
-  face_first_entry_.swap(first_entry);
   alive_.assign(n, 1);
   alive_.shrink_to_fit();
-  entry_face_.swap(entry_face);
-  entry_leaf_.swap(entry_leaf);
-  entry_prev_.swap(entry_prev);
-  entry_next_.swap(entry_next);
-  entry_chain_.swap(entry_chain);
+  // The leaf lists again, closed from now on, in face order: a list holds
+  // the newest face first, as it did.
+  for (std::vector<uint32_t>* v : {&entry_face_, &entry_leaf_, &entry_prev_, &entry_next_, &entry_chain_}) *v = {};
+  std::fill(leaf_entry_head_.begin(), leaf_entry_head_.end(), kNoIndex);
   free_entry_ = kNoIndex;
+  face_first_entry_.assign(n, kNoIndex);
+  face_first_entry_.shrink_to_fit();
+  closed_lists_ = true;
+  for (uint32_t f = 0; f < n; ++f) list_face(f, false);
 
   face_of_triple_ = {};
   edge_uses_ = {};

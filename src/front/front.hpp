@@ -20,12 +20,15 @@
 //    boxes tile the root cube, so a face meeting a box B at a point x is
 //    listed in the one leaf holding x, which is one of grid_range(B), and
 //    gathering the faces of the leaves over B finds every face that can
-//    meet B; the validity checks need exactly that. (Closed boxes would
-//    list a face lying on a leaf's side, as the templated core's faces
-//    do, in every leaf that touches it: three times the entries.) Front
-//    vertices are listed in their leaf, whose closed box holds them: the
-//    leaf containing them, or for a core vertex the leaf that templated
-//    it. Both lists are doubly linked head/next lists in flat
+//    meet B; the validity checks need exactly that. (Closed boxes list a
+//    face lying on a leaf's side, as the templated core's faces do, in
+//    every leaf that touches it: two to three times the entries.) After
+//    compact() the lists are rebuilt with closed boxes: the tree-less
+//    removals pick the faces to retry after an advance from a gather, and
+//    on thin walls they close only with the closed lists' wider gathers
+//    (pipe r1), while the front is small by then. Front vertices are
+//    listed in their leaf, whose closed box holds them: the leaf
+//    containing them, or for a core vertex the leaf that templated it. Both lists are doubly linked head/next lists in flat
 //    arrays (face entries come from a pool with a free list).
 // Every change stamps the leaves whose lists changed with a change counter,
 // so callers can tell whether the front near a place changed since a time.
@@ -112,11 +115,11 @@ class Front {
   // Removes the last vertex, which no face may have used (undoes add_vertex).
   void remove_last_vertex();
 
-  // Drops the closed face slots and the free leaf-list entries, renumbering
-  // the alive faces in their order (so every list keeps its order and
-  // every order by face index stays), and gives the memory back. Returns
-  // the new index of every old face slot (kNoIndex for a closed face).
-  // Face indices held elsewhere must be mapped through it.
+  // Drops the closed face slots, renumbering the alive faces in their
+  // order (every order by face index stays), rebuilds the leaf lists with
+  // closed boxes (newest face first, as before) and gives the memory back.
+  // Returns the new index of every old face slot (kNoIndex for a closed
+  // face). Face indices held elsewhere must be mapped through it.
   std::vector<uint32_t> compact();
 
   // Applies the positively oriented tet (a, b, c, p) built on alive face f
@@ -139,6 +142,9 @@ class Front {
 
  private:
   uint32_t add_face(uint32_t a, uint32_t b, uint32_t c);
+  // Lists face f in the leaves it meets (see the leaf index above); with
+  // `stamp`, marks them changed.
+  void list_face(uint32_t f, bool stamp);
   void close_face(uint32_t f, std::vector<uint32_t>& shrunk);
   void use_vertex(uint32_t v);
   void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
@@ -170,6 +176,7 @@ class Front {
   std::vector<uint32_t> entry_chain_;  // next entry of the same face
   uint32_t free_entry_ = kNoIndex;
   std::vector<uint32_t> leaf_entry_head_;
+  bool closed_lists_ = false;  // closed leaf boxes (after compact), else half-open
 
   std::vector<uint64_t> leaf_changed_;
   uint64_t changes_ = 0;
