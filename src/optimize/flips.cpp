@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "check/tet_faces.hpp"
+#include "core/intersections.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
 
@@ -33,7 +34,133 @@ void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
   out[0] = v0, out[1] = v1, out[2] = v2, out[3] = v3;
 }
 
+// A sandwiched polygon of multi_face_removal: ring r_0..r_{n-1} (the
+// faces' orientation seen from d, so (d, e, r_i, r_{i+1}) is positive when
+// de crosses it), and per ring edge the tets on d's and e's side that have
+// it; the old tets, two per face.
+struct Sandwich {
+  int n = 0;
+  uint32_t ring[TetTopology::kMaxRing];
+  uint32_t d_tet[TetTopology::kMaxRing], e_tet[TetTopology::kMaxRing];
+  int old_count = 0;
+  uint32_t old_tets[Flip::kMaxOld];
+};
+
+bool on_ring(const Sandwich& s, uint32_t v) { return std::find(s.ring, s.ring + s.n, v) != s.ring + s.n; }
+
+// The code of the face of tet t without vertex v.
+uint32_t face_without(const TetTopology& topo, uint32_t t, uint32_t v) {
+  return 4 * t + static_cast<uint32_t>(local_index(topo.tet(t), v));
+}
+
+// Grows `s` across ring edge i: the tet beyond d's tet there, (u, w, d, x),
+// whose face (u, w, x) has e's tet behind it, with x a new vertex. False
+// when there is none.
+bool grow(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, int i, Sandwich& out) {
+  const uint32_t u = s.ring[i], w = s.ring[(i + 1) % s.n];
+  const uint32_t* dt = topo.tet(s.d_tet[i]);
+  uint32_t third = TetTopology::kNone;  // the disk face's vertex off this edge
+  for (int k = 0; k < 4; ++k)
+    if (dt[k] != u && dt[k] != w && dt[k] != d) third = dt[k];
+  const uint32_t across = topo.twin(face_without(topo, s.d_tet[i], third));
+  if (across == TetTopology::kNone) return false;
+  const uint32_t beyond = across / 4, x = topo.tet(beyond)[across % 4];
+  if (x == e || on_ring(s, x)) return false;
+  const uint32_t below = topo.twin(face_without(topo, beyond, d));
+  if (below == TetTopology::kNone || topo.tet(below / 4)[below % 4] != e) return false;
+  out = s;
+  for (int k = s.n; k > i + 1; --k) {
+    out.ring[k] = s.ring[k - 1];
+    out.d_tet[k] = s.d_tet[k - 1];
+    out.e_tet[k] = s.e_tet[k - 1];
+  }
+  out.ring[i + 1] = x;
+  out.d_tet[i] = out.d_tet[i + 1] = beyond;
+  out.e_tet[i] = out.e_tet[i + 1] = below / 4;
+  ++out.n;
+  out.old_tets[out.old_count++] = beyond;
+  out.old_tets[out.old_count++] = below / 4;
+  return true;
+}
+
+// Worst new tet (d, e, r_i, r_{i+1}) of `s`, or kInvalid unless all are
+// positive; once it is at or below `floor` the search stops there (the
+// value returned is then at most `floor`).
+double sandwich_quality(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, double floor) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < s.n && worst > floor; ++i)
+    worst = std::min(worst, positive_quality(topo, d, e, s.ring[i], s.ring[(i + 1) % s.n]));
+  return worst;
+}
+
+// True when segment de meets one of the sandwich's faces (the polygon).
+bool crosses(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s) {
+  for (int k = 0; k < s.old_count; k += 2) {
+    const uint32_t* t = topo.tet(s.old_tets[k]);
+    uint32_t face[3];
+    int m = 0;
+    for (int j = 0; j < 4; ++j)
+      if (t[j] != d) face[m++] = t[j];
+    if (segment_triangle_intersect(topo.point(d), topo.point(e), topo.point(face[0]), topo.point(face[1]),
+                                   topo.point(face[2])))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, const double* beat) {
+  const uint32_t other = topo.twin(code);
+  if (other == TetTopology::kNone) return false;
+  const uint32_t t1 = code / 4, t2 = other / 4;
+  const uint32_t d = topo.tet(t1)[code % 4], e = topo.tet(t2)[other % 4];
+  Sandwich s;
+  s.n = 3;
+  for (int k = 0; k < 3; ++k) {
+    s.ring[k] = topo.tet(t1)[kOutwardFace[code % 4][k]];
+    s.d_tet[k] = t1;
+    s.e_tet[k] = t2;
+  }
+  s.old_tets[0] = t1;
+  s.old_tets[1] = t2;
+  s.old_count = 2;
+  double old_quality = std::min(existing_quality(topo, t1), existing_quality(topo, t2));
+  bool found = false;
+  while (s.n < TetTopology::kMaxRing) {
+    // The growth giving the best new tets (the first on ties).
+    Sandwich best_growth, candidate;
+    double best_growth_quality = kInvalid;
+    bool grown = false;
+    for (int i = 0; i < s.n; ++i) {
+      if (!grow(topo, d, e, s, i, candidate)) continue;
+      const double q = sandwich_quality(topo, d, e, candidate, grown ? best_growth_quality : kInvalid);
+      if (!grown || q > best_growth_quality) {
+        best_growth = candidate;
+        best_growth_quality = q;
+        grown = true;
+      }
+    }
+    if (!grown) break;
+    s = best_growth;
+    for (int k = s.old_count - 2; k < s.old_count; ++k)
+      old_quality = std::min(old_quality, existing_quality(topo, s.old_tets[k]));
+    // Wanted: positive new tets, better than the polygon found so far and,
+    // with `beat`, than *beat and the old tets.
+    const double bar = std::max(beat ? std::max(*beat, old_quality) : kInvalid, found ? flip.new_quality : kInvalid);
+    if (!(best_growth_quality > bar)) continue;
+    if (!crosses(topo, d, e, s)) continue;
+    flip = Flip{};
+    flip.kind = FlipKind::kMultiFace;
+    flip.new_quality = best_growth_quality;
+    flip.old_quality = old_quality;
+    flip.old_count = s.old_count;
+    std::copy_n(s.old_tets, s.old_count, flip.old_tets);
+    for (int i = 0; i < s.n; ++i) add_tet(flip, d, e, s.ring[i], s.ring[(i + 1) % s.n]);
+    found = true;
+  }
+  return found;
+}
 
 bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double* beat) {
   const uint32_t other = topo.twin(code);

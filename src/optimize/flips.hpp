@@ -6,7 +6,16 @@
 //    removed, the ring polygon r_0..r_{n-1} retriangulated by the
 //    Klincsek / Shewchuk dynamic program that maximises the worst new tet;
 //    each polygon triangle (r_i, r_j, r_k) makes the tets (r_i, r_j, r_k, b)
-//    and (r_i, r_k, r_j, a). n = 3 is the 3-2 flip, n = 4 the 4-4 flip.
+//    and (r_i, r_k, r_j, a). n = 3 is the 3-2 flip, n = 4 the 4-4 flip;
+//  - multi_face_removal: its inverse (Shewchuk's multi-face removal). The
+//    faces sandwiched between two vertices d and e (each the common face of
+//    a tet with apex d and one with apex e) that form a triangulated
+//    polygon r_0..r_{n-1} with no vertex inside are removed: their 2(n - 2)
+//    tets become the n tets (d, e, r_i, r_{i+1}) around the new edge de.
+//    Grown greedily from one face, across the polygon edge whose growth
+//    gives the best new tets, to n = 4..7; the best polygon is kept. The
+//    segment de must cross the polygon (exact), so the new tets wind once
+//    around it.
 // Every new tet is positively oriented by exact orient3d (else no
 // candidate), and the new tets' outer faces are the cavity's: boundary faces
 // and faces shared with the rest of the mesh are untouched. A candidate is
@@ -20,10 +29,10 @@
 
 namespace partet {
 
-enum class FlipKind : uint8_t { k23, k32, k44, kEdgeRemoval };
+enum class FlipKind : uint8_t { k23, k32, k44, kEdgeRemoval, kMultiFace };
 
 struct Flip {
-  static constexpr int kMaxOld = TetTopology::kMaxRing;
+  static constexpr int kMaxOld = 2 * (TetTopology::kMaxRing - 2);
   static constexpr int kMaxNew = 2 * (TetTopology::kMaxRing - 2);
   FlipKind kind = FlipKind::k23;
   double old_quality = 0;  // worst tet of the cavity
@@ -48,5 +57,10 @@ bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double*
 // Removal of the edge (v[i], v[j]) of tet t; false when its ring is open or
 // longer than kMaxRing, or no retriangulation has only positive tets.
 bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip, const double* beat = nullptr);
+
+// Multi-face removal grown from face `code` (face code 4*t + f); false on a
+// boundary face or when no polygon of 2 or more faces gives positive new
+// tets (with `beat`, better ones, as above).
+bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, const double* beat = nullptr);
 
 }  // namespace partet

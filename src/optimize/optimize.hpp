@@ -31,6 +31,7 @@ struct OptimizeOptions {
   // are left as they are; the optimizer works on the others.
   double quality_target_deg = 40;
   bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
+  bool multi_face_sweep = true;  // multi-face removals after the passes
 };
 
 struct OptimizeStats {
@@ -39,6 +40,7 @@ struct OptimizeStats {
   size_t flips_32 = 0;
   size_t flips_44 = 0;
   size_t edge_removals = 0;  // edges with rings of 5 to 7 tets
+  size_t multi_face_removals = 0;  // polygons of 2 to 5 sandwiched faces
   size_t vertices_inserted = 0;
   size_t vertices_moved = 0;
   int passes = 0;  // passes run

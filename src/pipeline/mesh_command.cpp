@@ -511,6 +511,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
           c["3-2 flips"] = n.flips_32;
           c["4-4 flips"] = n.flips_44;
           c["edge removals"] = n.edge_removals;
+          c["multi-face removals"] = n.multi_face_removals;
           c["vertices inserted"] = n.vertices_inserted;
           c["vertices moved"] = n.vertices_moved;
           c["passes"] = n.passes;

@@ -1,6 +1,7 @@
-// The flips on hand-made configurations: 2-3, 3-2, 4-4 and edge removal
-// around rings of 5 to 7 tets each improve the worst tet, keep every tet
-// positive, keep the boundary faces, and leave a valid mesh.
+// The flips on hand-made configurations: 2-3, 3-2, 4-4, edge removal
+// around rings of 5 to 7 tets and multi-face removal of polygons of 2 to 5
+// faces each improve the worst tet, keep every tet positive, keep the
+// boundary faces, and leave a valid mesh.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -139,6 +140,79 @@ TEST(Flips, NoEdgeRemovalOnABoundaryEdgeOrALongRing) {
   EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 9), flip));  // 8 tets
   // Every other edge of the ring tets lies on the boundary.
   EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 0), flip));
+}
+
+// Multi-face removal undoes an edge removal that made things worse: around
+// an edge of a fat ring the n tets are better than the 2(n - 2) of any
+// triangulated polygon, so from any sandwiched face the polygon is grown
+// back to all n - 2 faces and the n tets around the edge return.
+class MultiFaceRemoval : public testing::TestWithParam<int> {};
+
+TEST_P(MultiFaceRemoval, RestoresTheTetsAroundAnEdge) {
+  const int n = GetParam();
+  TetMesh m = ring_mesh(n, 1, 1, 0.7);
+  TetTopology topo(m);
+  const uint32_t* v = topo.tet(0);
+  Flip removal;
+  ASSERT_TRUE(edge_removal(topo, 0, local_index(v, static_cast<uint32_t>(n)),
+                           local_index(v, static_cast<uint32_t>(n + 1)), removal));
+  ASSERT_LT(removal.new_quality, removal.old_quality) << "the ring must be better around its edge";
+  std::vector<uint32_t> created;
+  topo.replace(removal.cavity(), removal.replacement(), created);
+  ASSERT_EQ(created.size(), static_cast<size_t>(2 * (n - 2)));
+  // A face between two polygon triangles' tets: apexes n and n + 1.
+  int found = 0;
+  for (uint32_t t : created) {
+    for (uint32_t f = 0; f < 4; ++f) {
+      const uint32_t apex = topo.tet(t)[f];
+      if (apex != static_cast<uint32_t>(n) || topo.twin(4 * t + f) == TetTopology::kNone) continue;
+      Flip flip;
+      ASSERT_TRUE(multi_face_removal(topo, 4 * t + f, flip)) << "tet " << t;
+      EXPECT_EQ(flip.kind, FlipKind::kMultiFace);
+      // The whole polygon, unless a part of it gives still better tets
+      // (on the 7-ring, where a chord makes a good tet).
+      EXPECT_GE(flip.new_quality, removal.old_quality - 1e-12);
+      if (n < 7) {
+        EXPECT_EQ(flip.old_count, 2 * (n - 2));
+        EXPECT_EQ(flip.new_count, n);
+        EXPECT_NEAR(flip.new_quality, removal.old_quality, 1e-12);
+      }
+      const double beat = flip.new_quality;
+      Flip none;
+      EXPECT_FALSE(multi_face_removal(topo, 4 * t + f, none, &beat)) << "nothing beats the best";
+      ++found;
+      if (found == 1) {
+        TetMesh copy = m;
+        TetTopology again(copy);
+        Flip same;
+        ASSERT_TRUE(multi_face_removal(again, 4 * t + f, same));
+        if (n < 7) {
+          apply_and_check(copy, again, same);
+        } else {
+          // A part of the polygon: the mesh's worst tet may lie outside it.
+          const auto boundary = boundary_faces(copy);
+          std::vector<uint32_t> made;
+          again.replace(same.cavity(), same.replacement(), made);
+          again.compact();
+          EXPECT_TRUE(all_positive(copy));
+          EXPECT_EQ(boundary_faces(copy), boundary);
+          ValidationResult r = validate_mesh(copy, nullptr);
+          EXPECT_TRUE(r.valid) << format_text(r);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(found, n - 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Flips, MultiFaceRemoval, testing::Values(4, 5, 6, 7));
+
+TEST(Flips, NoMultiFaceRemovalOnABoundaryFace) {
+  TetMesh m = bipyramid(0.5);
+  add_positive_tet(m, 0, 1, 2, 3);
+  TetTopology topo(m);
+  Flip flip;
+  for (uint32_t code = 0; code < 4; ++code) EXPECT_FALSE(multi_face_removal(topo, code, flip)) << code;
 }
 
 }  // namespace
