@@ -114,16 +114,21 @@ TEST(Flips, FourFourFlipTurnsTheAxisOfAThinOctahedron) {
   apply_and_check(m, topo, flip);
 }
 
+// The edge removal of a ring_mesh's axis (its vertices n and n + 1).
+bool remove_axis(const TetTopology& topo, int n, Flip& flip) {
+  const uint32_t* v = topo.tet(0);
+  return edge_removal(topo, 0, local_index(v, static_cast<uint32_t>(n)), local_index(v, static_cast<uint32_t>(n + 1)),
+                      flip);
+}
+
 class EdgeRemoval : public testing::TestWithParam<int> {};
 
 TEST_P(EdgeRemoval, RemovesALongEdgeThroughARing) {
   const int n = GetParam();
   TetMesh m = ring_mesh(n, 1, 0.8, 4);
   TetTopology topo(m);
-  const uint32_t* v = topo.tet(0);
   Flip flip;
-  ASSERT_TRUE(edge_removal(topo, 0, local_index(v, static_cast<uint32_t>(n)),
-                           local_index(v, static_cast<uint32_t>(n + 1)), flip));
+  ASSERT_TRUE(remove_axis(topo, n, flip));
   EXPECT_EQ(flip.kind, FlipKind::kEdgeRemoval);
   EXPECT_EQ(flip.old_count, n);
   EXPECT_EQ(flip.new_count, 2 * (n - 2));
@@ -152,10 +157,8 @@ TEST_P(MultiFaceRemoval, RestoresTheTetsAroundAnEdge) {
   const int n = GetParam();
   TetMesh m = ring_mesh(n, 1, 1, 0.7);
   TetTopology topo(m);
-  const uint32_t* v = topo.tet(0);
   Flip removal;
-  ASSERT_TRUE(edge_removal(topo, 0, local_index(v, static_cast<uint32_t>(n)),
-                           local_index(v, static_cast<uint32_t>(n + 1)), removal));
+  ASSERT_TRUE(remove_axis(topo, n, removal));
   ASSERT_LT(removal.new_quality, removal.old_quality) << "the ring must be better around its edge";
   std::vector<uint32_t> created;
   topo.replace(removal.cavity(), removal.replacement(), created);
