@@ -62,6 +62,12 @@ class Remover {
   void neighbourhood(uint32_t f);
   bool neighbourhood_changed_since(uint64_t stamp) const;
   bool neighbourhood_foreign() const;
+  // True when face f's last failure in this call checked target p and what
+  // blocked it then still does (still_blocked): checking it again must
+  // fail; `why` is set to that blocker.
+  bool known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker& why) const;
+  // Keeps why face f failed: blocked_, the targets it checked.
+  void remember_failure(uint32_t f);
   void make_tet(uint32_t f, uint32_t p);
   // closers_ = the third vertex of every other alive face along an edge of
   // face f: a target closes one face for each time it appears there.
@@ -88,11 +94,32 @@ class Remover {
   std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
   double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
   std::vector<size_t> leaves_;      // over the neighbourhood box: where targets come from
+  std::vector<uint32_t> leaf_cells_;  // their grid cells, lo then hi (6 per leaf)
   std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
   NearFront near_;
   std::vector<Target> targets_;
   std::vector<uint32_t> closers_;
   std::vector<uint32_t> added_, shrunk_;
+
+  // Failures of this call (only tets are applied during a call, so a
+  // blocker keeps blocking while it is on the front: still_blocked): per
+  // face slot its latest failure, a run [first, first + count) of the pool
+  // holding every target it checked and why each failed, or kNoIndex.
+  // Runs of closed or retried faces are garbage, dropped when the pool
+  // holds twice the live runs.
+  struct Blocked {
+    uint32_t target;
+    RemovalBlocker why;
+  };
+  struct Failure {
+    uint32_t first = kNoIndex;
+    uint32_t count = 0;
+  };
+  std::vector<Failure> failure_of_;
+  std::vector<Blocked> blocked_pool_;
+  size_t live_blocked_ = 0;
+  std::vector<Blocked> blocked_;  // the current try's checked targets
+  void drop_garbage_failures();
 };
 
 void Remover::neighbourhood(uint32_t f) {
@@ -120,6 +147,9 @@ void Remover::neighbourhood(uint32_t f) {
   uint32_t glo[3], ghi[3];
   grid_range(root_, box_lo_, box_hi_, glo, ghi);
   front_.query().leaves_in_range(glo, ghi, leaves_);
+  leaf_cells_.resize(6 * leaves_.size());
+  for (size_t i = 0; i < leaves_.size(); ++i)
+    front_.query().leaf_cells(leaves_[i], &leaf_cells_[6 * i], &leaf_cells_[6 * i + 3]);
 }
 
 bool Remover::neighbourhood_changed_since(uint64_t stamp) const {
@@ -141,6 +171,47 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
+  failure_of_.resize(front_.num_face_slots());
+}
+
+bool Remover::known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker& why) const {
+  const Failure& failure = failure_of_[f];
+  // Targets mostly keep their rank between tries: look at `hint` first.
+  for (size_t k = 0; k < failure.count; ++k) {
+    const Blocked& b = blocked_pool_[failure.first + (hint + k) % failure.count];
+    if (b.target != p) continue;
+    if (!still_blocked(front_, f, p, b.why)) return false;
+    why = b.why;
+    return true;
+  }
+  return false;
+}
+
+void Remover::remember_failure(uint32_t f) {
+  live_blocked_ -= failure_of_[f].count;
+  if (blocked_pool_.size() > 1024 && blocked_pool_.size() > 2 * live_blocked_) drop_garbage_failures();
+  PARTET_ASSERT(blocked_pool_.size() + blocked_.size() < kNoIndex, "failure pool overflow");
+  failure_of_[f] = {static_cast<uint32_t>(blocked_pool_.size()), static_cast<uint32_t>(blocked_.size())};
+  blocked_pool_.insert(blocked_pool_.end(), blocked_.begin(), blocked_.end());
+  live_blocked_ += blocked_.size();
+}
+
+void Remover::drop_garbage_failures() {
+  std::vector<Blocked> kept;
+  kept.reserve(live_blocked_);
+  live_blocked_ = 0;
+  for (uint32_t f = 0; f < failure_of_.size(); ++f) {
+    Failure& failure = failure_of_[f];
+    if (!front_.alive(f) || failure.count == 0) {
+      failure = {};
+      continue;
+    }
+    const uint32_t first = static_cast<uint32_t>(kept.size());
+    kept.insert(kept.end(), blocked_pool_.begin() + failure.first, blocked_pool_.begin() + failure.first + failure.count);
+    failure.first = first;
+    live_blocked_ += failure.count;
+  }
+  blocked_pool_.swap(kept);
 }
 
 void Remover::push(uint32_t f) {
@@ -175,20 +246,33 @@ bool Remover::try_face(uint32_t f, bool full) {
   // The first targets are checked against the front around their tet
   // alone (most faces take their first target); the rest, in full mode
   // only, against one gather over the whole neighbourhood.
+  // A target this face's last failure found blocked by what still blocks
+  // it is not checked again.
   const size_t n = std::min(targets_.size(), full ? kFullTargets : kCappedTargets);
+  blocked_.clear();
+  bool near_is_neighbourhood = false;
   for (size_t i = 0; i < n; ++i) {
     const uint32_t p = targets_[i].vertex;
+    RemovalBlocker why;
+    if (known_blocked(f, p, i, why)) {
+      ++counts_.skipped_checks;
+      blocked_.push_back({p, why});
+      continue;
+    }
     ++counts_.checks;
     if (i < kCappedTargets) {
       gather_around_tet(pa, pb, pc, front_.point(p));
-    } else if (i == kCappedTargets) {
+    } else if (!near_is_neighbourhood) {
       gather_near_front(front_, leaves_, near_);
+      near_is_neighbourhood = true;
     }
-    if (check_removal(front_, f, p, near_) == RemovalVerdict::kValid) {
+    if (check_removal(front_, f, p, near_, &why) == RemovalVerdict::kValid) {
       make_tet(f, p);
       return true;
     }
+    blocked_.push_back({p, why});
   }
+  remember_failure(f);
   return false;
 }
 
@@ -214,7 +298,15 @@ void Remover::gather_around_tet(const double* pa, const double* pb, const double
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
-  front_.query().leaves_in_range(glo, ghi, tet_leaves_);
+  // The tet's box lies in the neighbourhood box (targets are taken inside
+  // it), so its leaves are those of the neighbourhood that overlap it: the
+  // same list, in the same order, as a range query.
+  tet_leaves_.clear();
+  for (size_t i = 0; i < leaves_.size(); ++i) {
+    const uint32_t* c = &leaf_cells_[6 * i];
+    if (c[0] <= ghi[0] && glo[0] <= c[3] && c[1] <= ghi[1] && glo[1] <= c[4] && c[2] <= ghi[2] && glo[2] <= c[5])
+      tet_leaves_.push_back(leaves_[i]);
+  }
   gather_near_front(front_, tet_leaves_, near_);
 }
 
@@ -233,6 +325,7 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
+  failure_of_.assign(front_.num_face_slots(), Failure{});
   if (seeds) {
     for (uint32_t f : *seeds)
       if (front_.alive(f)) push(f);

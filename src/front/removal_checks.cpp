@@ -107,12 +107,22 @@ const char* verdict_name(RemovalVerdict v) {
   return "?";
 }
 
-RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near) {
+namespace {
+
+RemovalVerdict blocked(RemovalBlocker* why, RemovalVerdict verdict, uint32_t entity, int index) {
+  if (why) *why = {verdict, static_cast<uint8_t>(index), entity};
+  return verdict;
+}
+
+}  // namespace
+
+RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near,
+                             RemovalBlocker* why) {
   const uint32_t* base = front.face(f);
   const uint32_t a = base[0], b = base[1], c = base[2];
-  if (p == a || p == b || p == c) return RemovalVerdict::kNotPositive;
+  if (p == a || p == b || p == c) return blocked(why, RemovalVerdict::kNotPositive, p, 0);
   const double *pa = front.point(a), *pb = front.point(b), *pc = front.point(c), *pp = front.point(p);
-  if (orient3d(pa, pb, pc, pp) <= 0) return RemovalVerdict::kNotPositive;
+  if (orient3d(pa, pb, pc, pp) <= 0) return blocked(why, RemovalVerdict::kNotPositive, p, 0);
 
   // New faces (outward from the tet) and whether each is new or closes a twin.
   const uint32_t sides[3][3] = {{b, c, p}, {a, p, c}, {a, b, p}};
@@ -124,7 +134,8 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     // Same orientation when the alive face is a rotation of the side.
     const uint32_t* t = front.face(g);
     for (int r = 0; r < 3; ++r)
-      if (t[r] == sides[s][0] && t[(r + 1) % 3] == sides[s][1]) return RemovalVerdict::kDuplicateFace;
+      if (t[r] == sides[s][0] && t[(r + 1) % 3] == sides[s][1])
+        return blocked(why, RemovalVerdict::kDuplicateFace, g, s);
   }
   const uint32_t ends[3] = {a, b, c};
   bool new_edge[3];
@@ -140,7 +151,7 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     if (!point_in_box(q, tet_box)) continue;
     if (orient3d(pa, pc, pb, q) <= 0 && orient3d(pb, pc, pp, q) <= 0 && orient3d(pa, pp, pc, q) <= 0 &&
         orient3d(pa, pb, pp, q) <= 0)
-      return RemovalVerdict::kVertexInside;
+      return blocked(why, RemovalVerdict::kVertexInside, v, 0);
   }
 
   // (ii) New edges against front faces, (iii) new faces against front
@@ -162,7 +173,7 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     if (!boxes_meet(tet_box, face_box)) continue;
     for (int k = 0; k < 3; ++k) {
       if (!new_edge[k] || !boxes_meet(edge_box[k], face_box)) continue;
-      if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
+      if (segment_conflicts(front, p, ends[k], t)) return blocked(why, RemovalVerdict::kEdgeCrossesFace, g, k);
     }
     if (!any_new_side) continue;
     for (int k = 0; k < 3; ++k) {
@@ -173,11 +184,32 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
       if (!boxes_meet(tet_box, uw)) continue;
       for (int s = 0; s < 3; ++s) {
         if (!new_side[s] || !boxes_meet(side_box[s], uw)) continue;
-        if (segment_conflicts(front, u, w, sides[s])) return RemovalVerdict::kFaceCrossesEdge;
+        if (segment_conflicts(front, u, w, sides[s])) return blocked(why, RemovalVerdict::kFaceCrossesEdge, g, s);
       }
     }
   }
   return RemovalVerdict::kValid;
+}
+
+bool still_blocked(const Front& front, uint32_t f, uint32_t p, const RemovalBlocker& why) {
+  const uint32_t* base = front.face(f);
+  const uint32_t a = base[0], b = base[1], c = base[2];
+  switch (why.verdict) {
+    case RemovalVerdict::kValid: return false;
+    case RemovalVerdict::kNotPositive: return true;  // geometry and ids only
+    case RemovalVerdict::kDuplicateFace: return front.alive(why.entity);
+    case RemovalVerdict::kVertexInside: return front.vertex_uses(why.entity) > 0;
+    case RemovalVerdict::kEdgeCrossesFace: {
+      const uint32_t ends[3] = {a, b, c};
+      return front.alive(why.entity) && front.edge_uses(p, ends[why.index]) == 0;
+    }
+    case RemovalVerdict::kFaceCrossesEdge: {
+      const uint32_t sides[3][3] = {{b, c, p}, {a, p, c}, {a, b, p}};
+      const uint32_t* side = sides[why.index];
+      return front.alive(why.entity) && front.find_face(side[0], side[1], side[2]) == kNoIndex;
+    }
+  }
+  return false;
 }
 
 }  // namespace partet

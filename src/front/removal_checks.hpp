@@ -61,8 +61,27 @@ enum class RemovalVerdict : uint8_t {
 
 const char* verdict_name(RemovalVerdict v);
 
-// Validity of the tet on alive face f with apex p, against `near`.
-RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near);
+// Why a removal failed: the verdict and the front entity that caused it
+// (the duplicated face, the vertex inside, the face the new edge p-(a, b,
+// c)[index] crosses, or the face along whose edge new side `index` crosses;
+// the sides are (b, c, p), (a, p, c), (a, b, p)).
+struct RemovalBlocker {
+  RemovalVerdict verdict = RemovalVerdict::kValid;
+  uint8_t index = 0;
+  uint32_t entity = 0;
+};
+
+// Validity of the tet on alive face f with apex p, against `near`; with
+// `why`, the reason when it is not valid.
+RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near,
+                             RemovalBlocker* why = nullptr);
+
+// True when a removal (f, p) that failed for `why` must still fail on the
+// front as it is now: the blocking entity is still on the front and the
+// new edge or side it blocked is still new. The front must only have had
+// tets applied since (apply_tet: face slots are never reused and no front
+// vertex appears). Exact: it re-evaluates no geometry, which is fixed.
+bool still_blocked(const Front& front, uint32_t f, uint32_t p, const RemovalBlocker& why);
 
 // Closed segment s-o against closed triangle (s, t1, t2) sharing vertex s:
 // true when they meet anywhere other than at s.

@@ -43,6 +43,15 @@ class LeafRangeQuery {
   // answer is near the hint in Morton order (e.g. a neighbour of the hint).
   size_t locate_near(size_t hint, uint32_t x, uint32_t y, uint32_t z) const;
 
+  // The grid cells [lo, hi] (inclusive) of leaf `leaf`.
+  void leaf_cells(size_t leaf, uint32_t* lo, uint32_t* hi) const {
+    const uint32_t h = octant_edge(tree_.level[leaf]) - 1;
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = anchor_[3 * leaf + i];
+      hi[i] = lo[i] + h;
+    }
+  }
+
  private:
   // First leaf whose key is above `key` (the leaf containing it is the one
   // before).

@@ -439,6 +439,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
         c["faces left"] = n.faces_left;
         c["passes"] = first.passes + n.passes;
         c["checks"] = first.checks + n.checks;
+        c["checks skipped"] = first.skipped_checks + n.skipped_checks;
         return c;
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {

@@ -5,7 +5,9 @@
 // empty); faces near leaves owned by another rank wait, and a later call
 // with the leaves back on this rank continues the same front; a memo of
 // failures spares a later call the faces whose neighbourhood is unchanged;
-// compacting the front between calls changes no tet.
+// compacting the front between calls changes no tet; a failed removal
+// whose blocker is still there (what lets a call skip rechecking it) still
+// fails on the evolving front.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,10 +21,12 @@
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/initial_front.hpp"
+#include "front/removal_checks.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"
 #include "octree/build.hpp"
 #include "octree/classify.hpp"
+#include "octree/range_query.hpp"
 #include "octree/sizing.hpp"
 #include "surface/diagnose.hpp"
 #include "templates/template_mesh.hpp"
@@ -226,6 +230,84 @@ TEST(FrontRemoval, CompactionChangesNoTet) {
     EXPECT_EQ(out_a.tets, out_b.tets) << name;
   }
   EXPECT_GT(compacted_inputs, 0u) << "no input had closed faces to drop";
+}
+
+// Soundness of still_blocked, on real fronts as tets are applied: every
+// failed removal (f, p) whose blocker still_blocked keeps must fail again
+// when checked from scratch. Both outcomes must occur, of each kind.
+TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
+  struct Failed {
+    uint32_t f, p;
+    RemovalBlocker why;
+  };
+  size_t kept = 0, released = 0;
+  for (const char* name : {"joint.off", "spool.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    NearFront near;
+    std::vector<size_t> leaves;
+    std::vector<uint32_t> added, shrunk;
+    // The front within `grow` longest edges of the tet (a, b, c, p)'s box.
+    auto gather = [&](uint32_t f, uint32_t p, double grow) {
+      const uint32_t* t = front.face(f);
+      const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(p)};
+      double lo[3], hi[3], longest = 0;
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min({q[0][k], q[1][k], q[2][k], q[3][k]});
+        hi[k] = std::max({q[0][k], q[1][k], q[2][k], q[3][k]});
+        longest = std::max(longest, hi[k] - lo[k]);
+      }
+      for (int k = 0; k < 3; ++k) {
+        lo[k] -= grow * longest;
+        hi[k] += grow * longest;
+      }
+      uint32_t glo[3], ghi[3];
+      grid_range(m.root, lo, hi, glo, ghi);
+      front.query().leaves_in_range(glo, ghi, leaves);
+      gather_near_front(front, leaves, near);
+    };
+    std::vector<Failed> failed;
+    size_t applied = 0;
+    for (uint32_t f = 0; f < front.num_face_slots() && applied < 400; ++f) {
+      if (!front.alive(f)) continue;
+      gather(f, front.face(f)[0], 1.0);
+      const std::vector<uint32_t> candidates = near.vertices;
+      for (uint32_t p : candidates) {
+        gather(f, p, 0);
+        RemovalBlocker why;
+        if (check_removal(front, f, p, near, &why) != RemovalVerdict::kValid) {
+          failed.push_back({f, p, why});
+          continue;
+        }
+        make_removal_tet(front, m.tree, out, f, p, added, shrunk);
+        ++applied;
+        std::vector<Failed> still;
+        for (const Failed& x : failed) {
+          if (!front.alive(x.f) || front.vertex_uses(x.p) == 0) continue;
+          if (!still_blocked(front, x.f, x.p, x.why)) {
+            ++released;
+            continue;
+          }
+          ++kept;
+          gather(x.f, x.p, 0);
+          ASSERT_NE(check_removal(front, x.f, x.p, near), RemovalVerdict::kValid)
+              << name << ": face " << x.f << " target " << x.p << " was blocked by "
+              << verdict_name(x.why.verdict) << " " << x.why.entity << ", still there, and is valid now";
+          still.push_back(x);
+        }
+        failed.swap(still);
+        break;
+      }
+    }
+    EXPECT_GT(applied, 100u) << name;
+    out.xyz = front.xyz();  // the core's vertices are the front's first ones
+    out.global_ids.clear();
+    expect_valid(m, out, front.num_alive_faces(), name);
+  }
+  EXPECT_GT(kept, 1000u);
+  EXPECT_GT(released, 100u);
 }
 
 }  // namespace

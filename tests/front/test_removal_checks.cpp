@@ -2,10 +2,13 @@
 // (RemovalChecks) on fronts made by hand over a one-leaf octree: closing a
 // tet, a vertex inside the candidate, a new edge piercing a front face, a
 // front edge crossing a new face, a duplicate face, and touching cases at
-// shared vertices and edges that must be accepted.
+// shared vertices and edges that must be accepted; what blocked a removal
+// keeps blocking it while it is on the front, and only then.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -231,6 +234,87 @@ TEST(RemovalChecks, SegmentFromASharedVertex) {
   EXPECT_TRUE(meets_beyond_shared_vertex(s, along, t1, t2));
   EXPECT_FALSE(meets_beyond_shared_vertex(s, outside, t1, t2));
   EXPECT_FALSE(meets_beyond_shared_vertex(s, beside, t1, t2));
+}
+
+// Closes alive face g with a tet on a new apex one unit ahead of it.
+void close_with_new_apex(Front& front, uint32_t g) {
+  const uint32_t* t = front.face(g);
+  const double *a = front.point(t[0]), *b = front.point(t[1]), *c = front.point(t[2]);
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double apex[3] = {(a[0] + b[0] + c[0]) / 3 + n[0] / len, (a[1] + b[1] + c[1]) / 3 + n[1] / len,
+                          (a[2] + b[2] + c[2]) / 3 + n[2] / len};
+  const uint32_t p = front.add_vertex(apex, 1000 + front.num_vertices());
+  std::vector<uint32_t> added, shrunk;
+  front.apply_tet(g, p, added, shrunk);
+  EXPECT_FALSE(front.alive(g));
+}
+
+// The blocker of each failing configuration above, and still_blocked: true
+// while the blocker is on the front, false once a tet closed it.
+TEST(RemovalChecks, BlockersBlockWhileOnTheFront) {
+  auto blocker = [](const Front& front, uint32_t f, uint32_t p) {
+    NearFront near;
+    gather_near_front(front, {0}, near);
+    RemovalBlocker why;
+    EXPECT_NE(check_removal(front, f, p, near, &why), RemovalVerdict::kValid);
+    return why;
+  };
+  {
+    // The corner tet with its slanted face dented in to E = 4: E lies in
+    // the tet (0, 1, 2) + 3, and the region is the three tets coned to E.
+    std::vector<double> xyz = kTetXyz;
+    xyz.insert(xyz.end(), {0.25, 0.25, 0.25});
+    HandFront h = hand_front(xyz, {1, 2, 4, 2, 3, 4, 3, 1, 4, 0, 3, 2, 0, 1, 3, 0, 2, 1});
+    Front front(h.initial, h.tree, h.root);
+    const uint32_t base = face_on(front, 0, 1, 2);
+    const RemovalBlocker why = blocker(front, base, 3);
+    EXPECT_EQ(why.verdict, RemovalVerdict::kVertexInside);
+    EXPECT_EQ(why.entity, 4u);
+    EXPECT_TRUE(still_blocked(front, base, 3, why));
+    std::vector<uint32_t> added, shrunk;
+    for (const auto& t : {std::array<uint32_t, 3>{0, 1, 2}, {0, 2, 3}, {0, 3, 1}})
+      front.apply_tet(face_on(front, t[0], t[1], t[2]), 4, added, shrunk);
+    EXPECT_EQ(front.num_alive_faces(), 0u);
+    EXPECT_FALSE(still_blocked(front, base, 3, why));
+  }
+  {
+    const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -1, 0.5, 3, -1, 0.5, -1, 3, 0.5};
+    HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
+    Front front(h.initial, h.tree, h.root);
+    const uint32_t base = face_on(front, 0, 1, 2), slab = face_on(front, 4, 5, 6);
+    const RemovalBlocker why = blocker(front, base, 3);
+    EXPECT_EQ(why.verdict, RemovalVerdict::kEdgeCrossesFace);
+    EXPECT_EQ(why.entity, slab);
+    EXPECT_TRUE(still_blocked(front, base, 3, why));
+    close_with_new_apex(front, slab);
+    EXPECT_FALSE(still_blocked(front, base, 3, why));
+  }
+  {
+    const std::vector<double> xyz = {0, 0, 0,    1,   0,    0,   0,   1,     0,  0, 0, 1,
+                                     -0.1, 0.2, 0.3, 0.2, -0.1, 0.3, 0.5, -0.39, 0.3};
+    HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
+    Front front(h.initial, h.tree, h.root);
+    const uint32_t base = face_on(front, 0, 1, 2), thin = face_on(front, 4, 5, 6);
+    const RemovalBlocker why = blocker(front, base, 3);
+    EXPECT_EQ(why.verdict, RemovalVerdict::kFaceCrossesEdge);
+    EXPECT_EQ(why.entity, thin);
+    EXPECT_TRUE(still_blocked(front, base, 3, why));
+    close_with_new_apex(front, thin);
+    EXPECT_FALSE(still_blocked(front, base, 3, why));
+  }
+  {
+    HandFront h = hand_front(kTetXyz, {0, 2, 1, 0, 3, 1});
+    Front front(h.initial, h.tree, h.root);
+    const uint32_t base = face_on(front, 0, 1, 2), twin = face_on(front, 0, 1, 3);
+    const RemovalBlocker why = blocker(front, base, 3);
+    EXPECT_EQ(why.verdict, RemovalVerdict::kDuplicateFace);
+    EXPECT_EQ(why.entity, twin);
+    EXPECT_TRUE(still_blocked(front, base, 3, why));
+    close_with_new_apex(front, twin);
+    EXPECT_FALSE(still_blocked(front, base, 3, why));
+  }
 }
 
 }  // namespace
