@@ -53,7 +53,7 @@ namespace partet {
 
 struct RemovalOptions {
   int rank = 0;             // leaves owned by another rank are off limits
-  double reach = 1.0;       // neighbourhood half-size in longest base edges
+  double reach = 0.6;       // neighbourhood half-size in longest base edges
   double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
   // Tree-less removals only: rounds in a row without a smaller front before
