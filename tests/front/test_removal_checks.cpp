@@ -251,16 +251,34 @@ void close_with_new_apex(Front& front, uint32_t g) {
   EXPECT_FALSE(front.alive(g));
 }
 
+// Why the removal (f, p) fails, checked against the whole front.
+RemovalBlocker blocker_of(const Front& front, uint32_t f, uint32_t p) {
+  NearFront near;
+  gather_near_front(front, {0}, near);
+  RemovalBlocker why;
+  EXPECT_NE(check_removal(front, f, p, near, &why), RemovalVerdict::kValid);
+  return why;
+}
+
+// On the front of `outward`, the tet on face (0, 1, 2) with apex 3 fails
+// with `verdict`, blocked by the face on vertices `g`, until a tet closes
+// that face.
+void expect_blocked_until_closed(const std::vector<double>& xyz, const std::vector<uint32_t>& outward,
+                                 const std::array<uint32_t, 3>& g, RemovalVerdict verdict) {
+  HandFront h = hand_front(xyz, outward);
+  Front front(h.initial, h.tree, h.root);
+  const uint32_t base = face_on(front, 0, 1, 2), blocking = face_on(front, g[0], g[1], g[2]);
+  const RemovalBlocker why = blocker_of(front, base, 3);
+  EXPECT_EQ(why.verdict, verdict);
+  EXPECT_EQ(why.entity, blocking);
+  EXPECT_TRUE(still_blocked(front, base, 3, why));
+  close_with_new_apex(front, blocking);
+  EXPECT_FALSE(still_blocked(front, base, 3, why));
+}
+
 // The blocker of each failing configuration above, and still_blocked: true
 // while the blocker is on the front, false once a tet closed it.
 TEST(RemovalChecks, BlockersBlockWhileOnTheFront) {
-  auto blocker = [](const Front& front, uint32_t f, uint32_t p) {
-    NearFront near;
-    gather_near_front(front, {0}, near);
-    RemovalBlocker why;
-    EXPECT_NE(check_removal(front, f, p, near, &why), RemovalVerdict::kValid);
-    return why;
-  };
   {
     // The corner tet with its slanted face dented in to E = 4: E lies in
     // the tet (0, 1, 2) + 3, and the region is the three tets coned to E.
@@ -269,7 +287,7 @@ TEST(RemovalChecks, BlockersBlockWhileOnTheFront) {
     HandFront h = hand_front(xyz, {1, 2, 4, 2, 3, 4, 3, 1, 4, 0, 3, 2, 0, 1, 3, 0, 2, 1});
     Front front(h.initial, h.tree, h.root);
     const uint32_t base = face_on(front, 0, 1, 2);
-    const RemovalBlocker why = blocker(front, base, 3);
+    const RemovalBlocker why = blocker_of(front, base, 3);
     EXPECT_EQ(why.verdict, RemovalVerdict::kVertexInside);
     EXPECT_EQ(why.entity, 4u);
     EXPECT_TRUE(still_blocked(front, base, 3, why));
@@ -279,42 +297,14 @@ TEST(RemovalChecks, BlockersBlockWhileOnTheFront) {
     EXPECT_EQ(front.num_alive_faces(), 0u);
     EXPECT_FALSE(still_blocked(front, base, 3, why));
   }
-  {
-    const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -1, 0.5, 3, -1, 0.5, -1, 3, 0.5};
-    HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
-    Front front(h.initial, h.tree, h.root);
-    const uint32_t base = face_on(front, 0, 1, 2), slab = face_on(front, 4, 5, 6);
-    const RemovalBlocker why = blocker(front, base, 3);
-    EXPECT_EQ(why.verdict, RemovalVerdict::kEdgeCrossesFace);
-    EXPECT_EQ(why.entity, slab);
-    EXPECT_TRUE(still_blocked(front, base, 3, why));
-    close_with_new_apex(front, slab);
-    EXPECT_FALSE(still_blocked(front, base, 3, why));
-  }
-  {
-    const std::vector<double> xyz = {0, 0, 0,    1,   0,    0,   0,   1,     0,  0, 0, 1,
-                                     -0.1, 0.2, 0.3, 0.2, -0.1, 0.3, 0.5, -0.39, 0.3};
-    HandFront h = hand_front(xyz, {0, 2, 1, 4, 5, 6});
-    Front front(h.initial, h.tree, h.root);
-    const uint32_t base = face_on(front, 0, 1, 2), thin = face_on(front, 4, 5, 6);
-    const RemovalBlocker why = blocker(front, base, 3);
-    EXPECT_EQ(why.verdict, RemovalVerdict::kFaceCrossesEdge);
-    EXPECT_EQ(why.entity, thin);
-    EXPECT_TRUE(still_blocked(front, base, 3, why));
-    close_with_new_apex(front, thin);
-    EXPECT_FALSE(still_blocked(front, base, 3, why));
-  }
-  {
-    HandFront h = hand_front(kTetXyz, {0, 2, 1, 0, 3, 1});
-    Front front(h.initial, h.tree, h.root);
-    const uint32_t base = face_on(front, 0, 1, 2), twin = face_on(front, 0, 1, 3);
-    const RemovalBlocker why = blocker(front, base, 3);
-    EXPECT_EQ(why.verdict, RemovalVerdict::kDuplicateFace);
-    EXPECT_EQ(why.entity, twin);
-    EXPECT_TRUE(still_blocked(front, base, 3, why));
-    close_with_new_apex(front, twin);
-    EXPECT_FALSE(still_blocked(front, base, 3, why));
-  }
+  // The configurations of NewEdgePiercesAFrontFace, FrontEdgeCrossesANewFace
+  // and DuplicateFaceIsRejected.
+  expect_blocked_until_closed({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -1, 0.5, 3, -1, 0.5, -1, 3, 0.5},
+                              {0, 2, 1, 4, 5, 6}, {4, 5, 6}, RemovalVerdict::kEdgeCrossesFace);
+  expect_blocked_until_closed(
+      {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -0.1, 0.2, 0.3, 0.2, -0.1, 0.3, 0.5, -0.39, 0.3}, {0, 2, 1, 4, 5, 6},
+      {4, 5, 6}, RemovalVerdict::kFaceCrossesEdge);
+  expect_blocked_until_closed(kTetXyz, {0, 2, 1, 0, 3, 1}, {0, 1, 3}, RemovalVerdict::kDuplicateFace);
 }
 
 }  // namespace
