@@ -24,11 +24,6 @@ double positive_quality(const TetTopology& topo, uint32_t v0, uint32_t v1, uint3
   return tet_quality(p0, p1, p2, p3);
 }
 
-double existing_quality(const TetTopology& topo, uint32_t t) {
-  const uint32_t* v = topo.tet(t);
-  return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
-}
-
 void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
   uint32_t* out = &flip.new_tets[4 * flip.new_count++];
   out[0] = v0, out[1] = v1, out[2] = v2, out[3] = v3;
@@ -125,7 +120,7 @@ bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, cons
   s.old_tets[0] = t1;
   s.old_tets[1] = t2;
   s.old_count = 2;
-  double old_quality = std::min(existing_quality(topo, t1), existing_quality(topo, t2));
+  double old_quality = std::min(topo.quality(t1), topo.quality(t2));
   bool found = false;
   while (s.n < TetTopology::kMaxRing) {
     // The growth giving the best new tets (the first on ties).
@@ -144,7 +139,7 @@ bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, cons
     if (!grown) break;
     s = best_growth;
     for (int k = s.old_count - 2; k < s.old_count; ++k)
-      old_quality = std::min(old_quality, existing_quality(topo, s.old_tets[k]));
+      old_quality = std::min(old_quality, topo.quality(s.old_tets[k]));
     // Wanted: positive new tets, better than the polygon found so far and,
     // with `beat`, than *beat and the old tets.
     const double bar = std::max(beat ? std::max(*beat, old_quality) : kInvalid, found ? flip.new_quality : kInvalid);
@@ -175,7 +170,7 @@ bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double*
   flip.old_tets[0] = t1;
   flip.old_tets[1] = t2;
   flip.old_count = 2;
-  flip.old_quality = std::min(existing_quality(topo, t1), existing_quality(topo, t2));
+  flip.old_quality = std::min(topo.quality(t1), topo.quality(t2));
   const double bar = beat ? std::max(*beat, flip.old_quality) : kInvalid;
   flip.new_quality = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
@@ -194,7 +189,7 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip,
   const int n = ring.n;
   const uint32_t* r = ring.vertices;
   double old_quality = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < n; ++k) old_quality = std::min(old_quality, existing_quality(topo, ring.tets[k]));
+  for (int k = 0; k < n; ++k) old_quality = std::min(old_quality, topo.quality(ring.tets[k]));
   // A sub-polygon whose best is not above `bar` cannot be part of a wanted
   // triangulation: starting every entry at the bar prunes it.
   const double bar = beat ? std::max(*beat, old_quality) : kInvalid;

@@ -35,7 +35,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
   for (uint32_t t : cavity) {
     old_tets.insert(old_tets.end(), topo.tet(t), topo.tet(t) + 4);
-    const double q = quality_of(topo, topo.tet(t));
+    const double q = topo.quality(t);
     old_quality = std::min(old_quality, q);
     old_deficit += std::max(0.0, bar - q);
   }
@@ -74,7 +74,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   smooth_vertex(topo, v, scratch);
   double new_quality = std::numeric_limits<double>::infinity();
   for (uint32_t t : created) {
-    const double q = quality_of(topo, topo.tet(t));
+    const double q = topo.quality(t);
     new_quality = std::min(new_quality, q);
     new_deficit += std::max(0.0, bar - q);
   }

@@ -34,17 +34,12 @@ constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 // Work list entries per tet below the target at the start of a pass.
 constexpr size_t kWorkPerBadTet = 4;
 
-double quality_of(const TetTopology& topo, uint32_t t) {
-  const uint32_t* v = topo.tet(t);
-  return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
-}
-
 // Alive tets below `target`, worst first.
 std::vector<uint32_t> tets_below(const TetTopology& topo, double target) {
   std::vector<std::pair<double, uint32_t>> bad;
   for (uint32_t t = 0; t < topo.slots(); ++t) {
     if (!topo.alive(t)) continue;
-    const double q = quality_of(topo, t);
+    const double q = topo.quality(t);
     if (q < target) bad.emplace_back(q, t);
   }
   std::sort(bad.begin(), bad.end());
@@ -98,12 +93,12 @@ size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats) {
   size_t applied = 0;
   for (size_t i = 0; i < work.size() && i < cap; ++i) {
     const uint32_t t = work[i];
-    if (!topo.alive(t) || quality_of(topo, t) >= target) continue;
+    if (!topo.alive(t) || topo.quality(t) >= target) continue;
     created.clear();
     if (!improve_topology(topo, t, stats, created)) continue;
     ++applied;
     for (uint32_t c : created)
-      if (quality_of(topo, c) < target) work.push_back(c);
+      if (topo.quality(c) < target) work.push_back(c);
   }
   return applied;
 }
@@ -135,7 +130,7 @@ size_t multi_face_pass(TetTopology& topo, double target, OptimizeStats& stats) {
   std::vector<uint32_t> created;
   size_t applied = 0;
   for (uint32_t t : work) {
-    if (!topo.alive(t) || quality_of(topo, t) >= target) continue;
+    if (!topo.alive(t) || topo.quality(t) >= target) continue;
     Flip best, candidate;
     bool found = false;
     double beat = -std::numeric_limits<double>::infinity();
@@ -145,7 +140,7 @@ size_t multi_face_pass(TetTopology& topo, double target, OptimizeStats& stats) {
       int old_slivers = 0, new_slivers = 0;
       for (int i = 0; i < candidate.old_count; ++i) {
         gain -= radius_ratio_of(topo, topo.tet(candidate.old_tets[i]));
-        old_slivers += quality_of(topo, candidate.old_tets[i]) < ten;
+        old_slivers += topo.quality(candidate.old_tets[i]) < ten;
       }
       for (int i = 0; i < candidate.new_count; ++i) {
         const uint32_t* v = &candidate.new_tets[4 * i];
@@ -171,7 +166,7 @@ size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratc
   size_t inserted = 0;
   const double bar = insertion_bar(target);
   for (uint32_t t : tets_below(topo, bar))
-    if (topo.alive(t) && quality_of(topo, t) < bar) inserted += insert_vertex(topo, t, target, scratch);
+    if (topo.alive(t) && topo.quality(t) < bar) inserted += insert_vertex(topo, t, target, scratch);
   return inserted;
 }
 

@@ -128,7 +128,7 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   std::vector<size_t>& active = scratch.active;
   bool moved = false;
 
-  for (size_t k = 0; k < n; ++k) scratch.quality[k] = star.quality(k, x);
+  for (size_t k = 0; k < n; ++k) scratch.quality[k] = topo.quality(scratch.star[k]);
   for (int step = 0; step < kMaxSteps; ++step) {
     // scratch.quality holds the star's qualities at x.
     const double worst = *std::min_element(scratch.quality.begin(), scratch.quality.end());
@@ -165,7 +165,7 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     if (!improved) break;
     moved = true;
   }
-  if (moved) std::copy_n(x, 3, topo.point(v));
+  if (moved) topo.move_vertex(v, x);
   return moved;
 }
 

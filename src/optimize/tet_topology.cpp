@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 #include "core/error.hpp"
+#include "optimize/tet_quality.hpp"
 
 namespace partet {
 namespace {
@@ -40,6 +42,7 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   twin_.assign(4 * static_cast<size_t>(n), kNone);
   vertex_tet_.assign(mesh_.num_vertices(), kNone);
   mark_.assign(n, 0);
+  quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
   // The tets of every vertex (ascending), then each face's twin among the
   // tets of its smallest vertex: 16 bytes per tet, where sorting the faces
   // took 64.
@@ -139,11 +142,13 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
       mesh_.tets.resize(mesh_.tets.size() + 4);
       twin_.resize(twin_.size() + 4, kNone);
       mark_.push_back(0);
+      quality_.push_back(0);
     } else {
       t = free_slots_.back();
       free_slots_.pop_back();
     }
     created.push_back(t);
+    quality_[t] = std::numeric_limits<double>::quiet_NaN();
     std::copy_n(&new_tets[4 * i], 4, &mesh_.tets[4 * t]);
     for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
     for (int f = 0; f < 4; ++f) {
@@ -195,6 +200,18 @@ bool TetTopology::edge_ring(uint32_t t, int i, int j, Ring& ring) const {
   return true;
 }
 
+double TetTopology::measure(uint32_t t) const {
+  const uint32_t* v = tet(t);
+  return tet_quality(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
+}
+
+void TetTopology::move_vertex(uint32_t v, const double* x) {
+  std::copy_n(x, 3, &mesh_.xyz[3 * v]);
+  std::vector<uint32_t> star;
+  vertex_star(v, star);
+  for (uint32_t t : star) quality_[t] = std::numeric_limits<double>::quiet_NaN();
+}
+
 void TetTopology::vertex_star(uint32_t v, std::vector<uint32_t>& star) const {
   star.clear();
   const uint32_t first = vertex_tet_[v];
@@ -229,6 +246,7 @@ void TetTopology::compact() {
   vertex_tet_.clear();
   free_slots_.clear();
   mark_.clear();
+  quality_.clear();
 }
 
 }  // namespace partet

@@ -16,6 +16,7 @@
 // leaves the topology empty.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -36,7 +37,15 @@ class TetTopology {
   const uint32_t* tet(uint32_t t) const { return &mesh_.tets[4 * t]; }
   uint32_t twin(uint32_t code) const { return twin_[code]; }
   const double* point(uint32_t v) const { return &mesh_.xyz[3 * v]; }
-  double* point(uint32_t v) { return &mesh_.xyz[3 * v]; }
+  // Moves vertex v to x (the caller checks its tets stay positive).
+  void move_vertex(uint32_t v, const double* x);
+  // tet_quality of alive tet t, kept per slot until the tet is replaced or
+  // one of its vertices moves (half the optimizer's quality evaluations
+  // were of tets it had measured before).
+  double quality(uint32_t t) const {
+    if (std::isnan(quality_[t])) quality_[t] = measure(t);
+    return quality_[t];
+  }
   size_t num_vertices() const { return mesh_.num_vertices(); }
 
   // Appends a vertex at p (no tet has it yet; with global ids, `global_id`
@@ -84,6 +93,8 @@ class TetTopology {
   std::vector<uint32_t> twin_;         // per face code
   std::vector<uint32_t> vertex_tet_;   // an alive tet having the vertex, or kNone
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
+  double measure(uint32_t t) const;
+  mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk
   mutable uint32_t stamp_ = 0;
 };

@@ -1,7 +1,8 @@
 // The flips on hand-made configurations: 2-3, 3-2, 4-4, edge removal
 // around rings of 5 to 7 tets and multi-face removal of polygons of 2 to 5
 // faces each improve the worst tet, keep every tet positive, keep the
-// boundary faces, and leave a valid mesh.
+// boundary faces, and leave a valid mesh; the topology's kept tet
+// qualities follow vertex moves and replacements.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +44,34 @@ TetMesh bipyramid(double h) {
   TetMesh m;
   m.xyz = {0, 0, 0, 1, 0, 0, 0.5, std::sqrt(0.75), 0, 0.5, 0.3, h, 0.5, 0.3, -h};
   return m;
+}
+
+double measured(const TetTopology& topo, uint32_t t) {
+  const uint32_t* v = topo.tet(t);
+  return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
+}
+
+TEST(Flips, KeptQualitiesFollowMovesAndReplacements) {
+  TetMesh m = bipyramid(0.15);
+  add_positive_tet(m, 0, 1, 2, 3);
+  add_positive_tet(m, 0, 1, 2, 4);
+  TetTopology topo(m);
+  const double flat = topo.quality(0);
+  EXPECT_EQ(flat, measured(topo, 0));
+  EXPECT_EQ(topo.quality(1), measured(topo, 1));
+  // Raising apex 3 changes tet 0 only.
+  const double raised[3] = {0.5, 0.3, 0.6};
+  topo.move_vertex(3, raised);
+  EXPECT_GT(topo.quality(0), flat);
+  EXPECT_EQ(topo.quality(0), measured(topo, 0));
+  EXPECT_EQ(topo.quality(1), measured(topo, 1));
+  // A replacement measures its new tets afresh.
+  Flip flip;
+  for (uint32_t code = 0; code < 8 && flip.new_count == 0; ++code) face_flip(topo, code, flip);
+  ASSERT_EQ(flip.new_count, 3);
+  std::vector<uint32_t> created;
+  topo.replace(flip.cavity(), flip.replacement(), created);
+  for (uint32_t t : created) EXPECT_EQ(topo.quality(t), measured(topo, t));
 }
 
 TEST(Flips, TwoThreeFlipOfAFlatPair) {
