@@ -1,9 +1,13 @@
 // Smoothing of one interior vertex, the quality measure, and the frozen
-// flags of optimize_mesh on a cube coned to a perturbed centre.
+// flags of optimize_mesh on a cube coned to a perturbed centre; the least
+// norm point of a few gradients against a brute-force search.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
 
 #include "check/quality.hpp"
 #include "check/validate.hpp"
@@ -109,6 +113,48 @@ TEST(OptimizeMesh, NoPassesOnlyMeasures) {
   EXPECT_EQ(stats.passes, 0);
   EXPECT_EQ(stats.before.tets, 12u);
   EXPECT_EQ(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
+}
+
+// The least norm point of the hull of 1 to 6 random vectors (some through
+// the origin's side, some not) against the best convex combination on a
+// fine grid of weights: never farther from the origin, and close to it.
+TEST(Smoothing, LeastNormDirectionMatchesBruteForce) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(-1, 1);
+  for (int trial = 0; trial < 300; ++trial) {
+    const size_t n = 1 + trial % 6;
+    std::vector<double> gradient(3 * (n + 1));
+    std::vector<size_t> active;
+    const double shift = trial % 2 ? 0.0 : 1.5;  // half the sets lie off the origin
+    for (size_t k = 0; k < n; ++k) {
+      for (int i = 0; i < 3; ++i) gradient[3 * (k + 1) + i] = coord(rng) + (i == 0 ? shift : 0);
+      active.push_back(k + 1);  // slot 0 unused: indices go through `active`
+    }
+    double d[3];
+    least_norm_direction(gradient, active, d);
+    const double got = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    // Brute force over weights on a grid of step 1/40 (n <= 3), coarser above.
+    const int steps = n <= 3 ? 40 : 12;
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<int> w(n, 0);
+    for (;;) {
+      int used = 0;
+      for (size_t k = 0; k + 1 < n; ++k) used += w[k];
+      if (used <= steps) {
+        double p[3] = {0, 0, 0};
+        for (size_t k = 0; k < n; ++k) {
+          const double weight = (k + 1 < n ? w[k] : steps - used) / static_cast<double>(steps);
+          for (int i = 0; i < 3; ++i) p[i] += weight * gradient[3 * (k + 1) + i];
+        }
+        best = std::min(best, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+      }
+      size_t k = 0;
+      while (k + 1 < n && ++w[k] > steps) w[k++] = 0;
+      if (k + 1 >= n) break;
+    }
+    EXPECT_LE(got, best + 1e-9) << "trial " << trial << ", " << n << " vectors";
+    EXPECT_GE(got, best - (n <= 3 ? 0.05 : 0.2)) << "trial " << trial << ", " << n << " vectors";
+  }
 }
 
 }  // namespace
