@@ -46,6 +46,18 @@ bool finite_point(const double* p) {
 
 }  // namespace
 
+double tet_radius_ratio(const double* p0, const double* p1, const double* p2, const double* p3) {
+  const V3 a = sub(p1, p0), b = sub(p2, p0), c = sub(p3, p0);
+  const V3 n[4] = {cross(sub(c, a), sub(b, a)), cross(b, c), cross(c, a), cross(a, b)};
+  const double d = dot(a, n[1]);
+  const double area_sum = norm(n[0]) + norm(n[1]) + norm(n[2]) + norm(n[3]);
+  const double aa = dot(a, a), bb = dot(b, b), cc = dot(c, c);
+  // 6 V times the circumcentre (relative to p0), doubled.
+  const V3 centre2d = axpy(aa, n[1], axpy(bb, n[2], V3{cc * n[3].x, cc * n[3].y, cc * n[3].z}));
+  const double denominator = area_sum * norm(centre2d);
+  return (d != 0 && denominator > 0) ? std::min(1.0, 6 * d * d / denominator) : 0.0;
+}
+
 TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3) {
   TetShape s;
   V3 a = sub(p1, p0), b = sub(p2, p0), c = sub(p3, p0);
@@ -54,11 +66,7 @@ TetShape tet_shape(const double* p0, const double* p1, const double* p2, const d
   s.volume = d / 6;
 
   double len[4];
-  double area_sum = 0;
-  for (int k = 0; k < 4; ++k) {
-    len[k] = norm(n[k]);
-    area_sum += len[k];
-  }
+  for (int k = 0; k < 4; ++k) len[k] = norm(n[k]);
   if (len[0] > 0 && len[1] > 0 && len[2] > 0 && len[3] > 0) {
     // The smallest angle has the largest cosine: one atan2 per extreme.
     int lo = 0, hi = 0;
@@ -76,10 +84,8 @@ TetShape tet_shape(const double* p0, const double* p1, const double* p2, const d
     s.max_dihedral_rad = std::numbers::pi;
   }
 
-  double aa = dot(a, a), bb = dot(b, b), cc = dot(c, c);
-  V3 centre2d = axpy(aa, n[1], axpy(bb, n[2], V3{cc * n[3].x, cc * n[3].y, cc * n[3].z}));
-  double denominator = area_sum * norm(centre2d);
-  s.radius_ratio = (d != 0 && denominator > 0) ? std::min(1.0, 6 * d * d / denominator) : 0.0;
+  s.radius_ratio = tet_radius_ratio(p0, p1, p2, p3);
+  const double aa = dot(a, a), bb = dot(b, b), cc = dot(c, c);
 
   double edges[6] = {
       aa, bb, cc, dot(sub(b, a), sub(b, a)), dot(sub(c, a), sub(c, a)), dot(sub(c, b), sub(c, b))};

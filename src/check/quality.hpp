@@ -38,6 +38,9 @@ struct TetShape {
   double volume;  // signed: positive when orient3d(p0, p1, p2, p3) > 0
 };
 TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3);
+// tet_shape's radius_ratio alone (3 inradius / circumradius; 1 for the
+// regular tet, 0 for a flat one), without the angles.
+double tet_radius_ratio(const double* p0, const double* p1, const double* p2, const double* p3);
 
 QualityStats measure_quality(const TetMesh& mesh);
 

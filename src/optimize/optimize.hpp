@@ -3,7 +3,9 @@
 // with its 3-2 and 4-4 special cases, see flips.hpp) on the tets below the
 // quality target, worst first, then interior vertex insertion where it pays
 // (insertion.hpp), then optimization-based smoothing (smoothing.hpp) of the
-// free vertices of the tets still below the target.
+// free vertices of the tets still below the target; after the passes, a
+// sweep of multi-face removals and two sweeps of radius-ratio relaxation
+// (relax_vertex), which moves no worst tet down and adds no sliver.
 //
 // Frozen vertices never move: those of boundary faces (faces of exactly one
 // tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
@@ -11,7 +13,8 @@
 // their side. No vertex is removed: inserted vertices are appended to xyz
 // (and to global_ids when the mesh has them), so existing indices stay. Every change keeps every tet
 // positive by exact orient3d and strictly raises the worst quality of the
-// tets it replaces or moves; a pass has a bounded amount of work and there
+// tets it replaces or moves (a relaxation keeps it and raises the radius
+// ratios); a pass has a bounded amount of work and there
 // are at most `passes` passes. Deterministic: no hashing order, no threads,
 // no randomness.
 #pragma once
@@ -43,6 +46,7 @@ struct OptimizeStats {
   size_t multi_face_removals = 0;  // polygons of 2 to 5 sandwiched faces
   size_t vertices_inserted = 0;
   size_t vertices_moved = 0;
+  size_t vertices_relaxed = 0;  // moves of the radius-ratio relaxation
   int passes = 0;  // passes run
   double seconds = 0;
   // Wall seconds of the parts, summed over the passes; `measure` is the

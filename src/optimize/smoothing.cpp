@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "check/quality.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
 
@@ -66,6 +67,11 @@ class Star {
       if (!(quality[k] > bar)) return false;
     }
     return true;
+  }
+  double radius_ratio(size_t k, const double* x) const {
+    const double* p[4];
+    points(k, x, p);
+    return tet_radius_ratio(p[0], p[1], p[2], p[3]);
   }
   // Mean distance from x to the other vertices of the star's tets.
   double scale(const double* x) const {
@@ -252,6 +258,54 @@ void least_norm_direction(const std::vector<double>& gradient, const std::vector
     const double t = std::clamp(-dot3(d, e) / dot3(e, e), 0.0, 1.0);
     for (int i = 0; i < 3; ++i) d[i] += t * e[i];
   }
+}
+
+bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
+  topo.vertex_star(v, scratch.star);
+  if (scratch.star.empty()) return false;
+  const Star star(topo, v, scratch.star);
+  const size_t n = scratch.star.size();
+  // The neighbours, each once.
+  std::vector<uint32_t>& around = scratch.neighbours;
+  around.clear();
+  for (uint32_t t : scratch.star)
+    for (int k = 0; k < 4; ++k)
+      if (topo.tet(t)[k] != v) around.push_back(topo.tet(t)[k]);
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  double centroid[3] = {0, 0, 0};
+  for (uint32_t u : around)
+    for (int i = 0; i < 3; ++i) centroid[i] += topo.point(u)[i] / static_cast<double>(around.size());
+  // Tets under 10 degrees count as slivers: their number may not grow.
+  const double sliver = quality_of_angle(10);
+  double worst = std::numeric_limits<double>::infinity(), sum = 0;
+  int slivers = 0;
+  for (size_t k = 0; k < n; ++k) {
+    const double q = topo.quality(scratch.star[k]);
+    worst = std::min(worst, q);
+    slivers += q < sliver;
+    sum += star.radius_ratio(k, topo.point(v));
+  }
+  const double* x = topo.point(v);
+  for (const double step : {1.0, 0.5}) {
+    const double y[3] = {x[0] + step * (centroid[0] - x[0]), x[1] + step * (centroid[1] - x[1]),
+                         x[2] + step * (centroid[2] - x[2])};
+    if (!star.positive(y)) continue;
+    double trial_sum = 0;
+    int trial_slivers = 0;
+    bool keeps = true;
+    for (size_t k = 0; k < n && keeps; ++k) {
+      const double q = star.quality(k, y);
+      keeps = q >= worst;
+      trial_slivers += q < sliver;
+      trial_sum += star.radius_ratio(k, y);
+    }
+    if (keeps && trial_slivers <= slivers && trial_sum > sum) {
+      topo.move_vertex(v, y);
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace partet

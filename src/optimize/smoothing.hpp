@@ -28,10 +28,19 @@ struct SmoothingScratch {
   std::vector<double> trial;     // per star tet, at a trial point
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
+  std::vector<uint32_t> neighbours;
 };
 
 // Moves v when that raises the worst quality of its star; true if it moved.
 bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
+
+// Smart Laplacian relaxation: moves v to the centroid of its neighbours
+// (or halfway there) when every star tet stays positive (exact orient3d),
+// the star's worst quality does not drop, no more of its tets have an angle
+// under 10 degrees, and the sum of its tets' radius ratios grows. The optimizer's passes maximise the worst dihedral angle,
+// which leaves the mean radius ratio where it was; this lifts it. True if
+// v moved.
+bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
 
 // The point of least norm in the convex hull of the vectors gradient[3k ..
 // 3k + 2] for k in `active` (not empty), in d: the steepest common ascent

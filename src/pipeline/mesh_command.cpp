@@ -515,6 +515,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
           c["multi-face removals"] = n.multi_face_removals;
           c["vertices inserted"] = n.vertices_inserted;
           c["vertices moved"] = n.vertices_moved;
+          c["vertices relaxed"] = n.vertices_relaxed;
           c["passes"] = n.passes;
           c["topology s"] = n.topology_seconds;
           c["insertion s"] = n.insertion_seconds;

@@ -115,6 +115,71 @@ TEST(OptimizeMesh, NoPassesOnlyMeasures) {
   EXPECT_EQ(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
 }
 
+double radius_ratio_sum(const TetMesh& m) {
+  double sum = 0;
+  for (size_t t = 0; t < m.num_tets(); ++t) {
+    const uint32_t* v = &m.tets[4 * t];
+    sum += tet_radius_ratio(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+  }
+  return sum;
+}
+
+// Relaxation takes a perturbed centre to (or towards) its neighbours'
+// centroid, raising the radius ratios without lowering the worst tet, and
+// leaves a centre already there alone.
+TEST(Smoothing, RelaxationRaisesTheRadiusRatiosOnly) {
+  TetMesh m = coned_cube(0.62, 0.57, 0.55);
+  const double worst = worst_quality(m), sum = radius_ratio_sum(m);
+  TetTopology topo(m);
+  SmoothingScratch scratch;
+  EXPECT_TRUE(relax_vertex(topo, 8, scratch));
+  EXPECT_TRUE(all_positive(m));
+  EXPECT_GE(worst_quality(m), worst);
+  EXPECT_GT(radius_ratio_sum(m), sum);
+  // The neighbours are the 8 corners: their centroid is the cube's centre.
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.xyz[24 + i], 0.5, 1e-12);
+  EXPECT_EQ(topo.quality(0), tet_quality(m.point(m.tets[0]), m.point(m.tets[1]), m.point(m.tets[2]), m.point(m.tets[3])));
+  EXPECT_FALSE(relax_vertex(topo, 8, scratch));
+}
+
+// On jittered cubes with a random centre: relaxation never lowers the worst
+// tet nor leaves a tet non-positive, and a move always raises the radius
+// ratios. Some of the cases have a centroid that would raise the radius
+// ratios but lower the worst tet (they must be refused or halved).
+TEST(Smoothing, RelaxationKeepsTheWorstTet) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2), inside(0.3, 0.7);
+  size_t moved = 0, tempting = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    TetMesh m = coned_cube(inside(rng), inside(rng), inside(rng));
+    for (size_t i = 0; i < 24; ++i) m.xyz[i] += jitter(rng);
+    if (!all_positive(m)) continue;
+    const double worst = worst_quality(m), sum = radius_ratio_sum(m);
+    // What the full step to the centroid would do.
+    TetMesh at_centroid = m;
+    for (int i = 0; i < 3; ++i) {
+      double c = 0;
+      for (size_t v = 0; v < 8; ++v) c += m.xyz[3 * v + i] / 8;
+      at_centroid.xyz[24 + i] = c;
+    }
+    tempting += all_positive(at_centroid) && worst_quality(at_centroid) < worst && radius_ratio_sum(at_centroid) > sum;
+    const std::vector<double> before = m.xyz;
+    TetTopology topo(m);
+    SmoothingScratch scratch;
+    const bool relaxed = relax_vertex(topo, 8, scratch);
+    moved += relaxed;
+    EXPECT_TRUE(all_positive(m)) << "trial " << trial;
+    EXPECT_GE(worst_quality(m), worst) << "trial " << trial;
+    if (relaxed) {
+      EXPECT_GT(radius_ratio_sum(m), sum) << "trial " << trial;
+    } else {
+      EXPECT_EQ(m.xyz, before) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(moved, 50u);
+  EXPECT_GT(tempting, 5u);
+}
+
 // The least norm point of the hull of 1 to 6 random vectors (some through
 // the origin's side, some not) against the best convex combination on a
 // fine grid of weights: never farther from the origin, and close to it.
