@@ -287,7 +287,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     sum += star.radius_ratio(k, topo.point(v));
   }
   const double* x = topo.point(v);
-  for (const double step : {1.0, 0.5}) {
+  for (const double step : {1.0, 0.5, 0.25}) {
     const double y[3] = {x[0] + step * (centroid[0] - x[0]), x[1] + step * (centroid[1] - x[1]),
                          x[2] + step * (centroid[2] - x[2])};
     if (!star.positive(y)) continue;
