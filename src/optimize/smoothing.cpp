@@ -20,6 +20,11 @@ constexpr double kModelBand = 0.1;     // tets this close to the worst are model
 constexpr double kMaxMove = 0.5;       // longest step, in units of scale
 
 double dot3(const double* u, const double* w) { return u[0] * w[0] + u[1] * w[1] + u[2] * w[2]; }
+void cross3(const double* u, const double* w, double* out) {
+  out[0] = u[1] * w[2] - u[2] * w[1];
+  out[1] = u[2] * w[0] - u[0] * w[2];
+  out[2] = u[0] * w[1] - u[1] * w[0];
+}
 
 // The star of v with v's position replaced by a trial point.
 class Star {
@@ -138,6 +143,34 @@ void least_norm_on_triangle(const double* a, const double* b, const double* c, d
   if (!(sum > 0)) return least_norm_on_segment(a, b, d);  // a degenerate triangle
   const double v = vb / sum, w = vc / sum;
   for (int i = 0; i < 3; ++i) d[i] = a[i] + v * ab[i] + w * ac[i];
+}
+
+// The volume-weighted mean of the circumcentres of the positive tets of
+// `star` (the optimal Delaunay triangulation update of Chen and Xu), in
+// out; false when no tet is positive.
+bool odt_point(const TetTopology& topo, const std::vector<uint32_t>& star, double out[3]) {
+  double sum[3] = {0, 0, 0}, volume = 0;
+  for (uint32_t t : star) {
+    const uint32_t* v = topo.tet(t);
+    const double* p0 = topo.point(v[0]);
+    double e[3][3];
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) e[j][i] = topo.point(v[j + 1])[i] - p0[i];
+    // Circumcentre - p0 = (|e0|^2 e1 x e2 + |e1|^2 e2 x e0 + |e2|^2 e0 x e1) / (2 det).
+    double c[3][3];
+    cross3(e[1], e[2], c[0]);
+    cross3(e[2], e[0], c[1]);
+    cross3(e[0], e[1], c[2]);
+    const double det = dot3(e[0], c[0]);
+    if (!(det > 0)) continue;
+    const double len[3] = {dot3(e[0], e[0]), dot3(e[1], e[1]), dot3(e[2], e[2])};
+    for (int i = 0; i < 3; ++i)
+      sum[i] += det * (p0[i] + (len[0] * c[0][i] + len[1] * c[1][i] + len[2] * c[2][i]) / (2 * det));
+    volume += det;
+  }
+  if (!(volume > 0)) return false;
+  for (int i = 0; i < 3; ++i) out[i] = sum[i] / volume;
+  return true;
 }
 
 }  // namespace
@@ -287,24 +320,27 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     sum += star.radius_ratio(k, topo.point(v));
   }
   const double* x = topo.point(v);
-  for (const double step : {1.0, 0.5, 0.25}) {
-    const double y[3] = {x[0] + step * (centroid[0] - x[0]), x[1] + step * (centroid[1] - x[1]),
-                         x[2] + step * (centroid[2] - x[2])};
-    if (!star.positive(y)) continue;
-    double trial_sum = 0;
-    int trial_slivers = 0;
-    bool keeps = true;
-    for (size_t k = 0; k < n && keeps; ++k) {
-      const double q = star.quality(k, y);
-      keeps = q >= worst;
-      trial_slivers += q < sliver;
-      trial_sum += star.radius_ratio(k, y);
+  double odt[3];
+  const bool has_odt = odt_point(topo, scratch.star, odt);
+  for (const double* target : {has_odt ? odt : centroid, centroid})
+    for (const double step : {1.0, 0.5, 0.25}) {
+      const double y[3] = {x[0] + step * (target[0] - x[0]), x[1] + step * (target[1] - x[1]),
+                           x[2] + step * (target[2] - x[2])};
+      if (!star.positive(y)) continue;
+      double trial_sum = 0;
+      int trial_slivers = 0;
+      bool keeps = true;
+      for (size_t k = 0; k < n && keeps; ++k) {
+        const double q = star.quality(k, y);
+        keeps = q >= worst;
+        trial_slivers += q < sliver;
+        trial_sum += star.radius_ratio(k, y);
+      }
+      if (keeps && trial_slivers <= slivers && trial_sum > sum) {
+        topo.move_vertex(v, y);
+        return true;
+      }
     }
-    if (keeps && trial_slivers <= slivers && trial_sum > sum) {
-      topo.move_vertex(v, y);
-      return true;
-    }
-  }
   return false;
 }
 

@@ -34,8 +34,9 @@ struct SmoothingScratch {
 // Moves v when that raises the worst quality of its star; true if it moved.
 bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
 
-// Smart Laplacian relaxation: moves v to the centroid of its neighbours
-// (or a half or a quarter of the way there) when every star tet stays positive (exact orient3d),
+// Smart Laplacian relaxation: moves v to the volume-weighted mean of its
+// tets' circumcentres (the optimal Delaunay triangulation point), else to
+// the centroid of its neighbours, or a half or a quarter of the way, when every star tet stays positive (exact orient3d),
 // the star's worst quality does not drop, no more of its tets have an angle
 // under 10 degrees, and the sum of its tets' radius ratios grows. The optimizer's passes maximise the worst dihedral angle,
 // which leaves the mean radius ratio where it was; this lifts it. True if
