@@ -1,16 +1,19 @@
-// Point-to-triangle distance in doubles (closest point by Voronoi regions,
-// after Ericson, Real-Time Collision Detection §5.1.5), for size and spacing
-// heuristics only: geometric decisions use the exact predicates.
+// Point-to-triangle closest point and distance in doubles (Voronoi regions,
+// after Ericson, Real-Time Collision Detection §5.1.5), for size, spacing
+// and search-direction heuristics only: geometric decisions use the exact
+// predicates.
 #pragma once
 
 namespace partet {
 
-inline double squared_point_triangle_distance(const double* p, const double* a, const double* b, const double* c) {
+// The point of triangle abc closest to p, in q (a for a degenerate
+// triangle whose closest point is inside).
+inline void closest_point_on_triangle(const double* p, const double* a, const double* b, const double* c, double* q) {
   auto sub = [](const double* x, const double* y, double* r) {
     for (int k = 0; k < 3; ++k) r[k] = x[k] - y[k];
   };
   auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
-  double ab[3], ac[3], ap[3], q[3];
+  double ab[3], ac[3], ap[3];
   sub(b, a, ab);
   sub(c, a, ac);
   sub(p, a, ap);
@@ -44,9 +47,13 @@ inline double squared_point_triangle_distance(const double* p, const double* a, 
       at(vb / denom, vc / denom);
     }
   }
-  double d[3];
-  sub(p, q, d);
-  return dot(d, d);
+}
+
+inline double squared_point_triangle_distance(const double* p, const double* a, const double* b, const double* c) {
+  double q[3];
+  closest_point_on_triangle(p, a, b, c, q);
+  const double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
 
 }  // namespace partet

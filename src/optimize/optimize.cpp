@@ -166,17 +166,26 @@ size_t multi_face_pass(TetTopology& topo, double target, OptimizeStats& stats) {
 // templated core's tets are at 0.64 to 0.95 and gain nothing).
 constexpr double kRelaxBelow = 0.75;
 
+// The vertices of `tets` that are not frozen (inserted ones, beyond
+// `frozen`, are free), ascending, each once.
+std::vector<uint32_t> free_vertices_of(const TetTopology& topo, const std::vector<uint32_t>& tets,
+                                       const std::vector<uint8_t>& frozen) {
+  std::vector<uint32_t> vertices;
+  for (uint32_t t : tets)
+    for (int k = 0; k < 4; ++k)
+      if (topo.tet(t)[k] >= frozen.size() || !frozen[topo.tet(t)[k]]) vertices.push_back(topo.tet(t)[k]);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
 // After the passes: relax_vertex on the free vertices of the tets below
 // kRelaxBelow, in index order; the number moved.
 size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, SmoothingScratch& scratch) {
-  std::vector<uint32_t> vertices;
-  for (uint32_t t = 0; t < topo.slots(); ++t) {
-    if (!topo.alive(t) || radius_ratio_of(topo, topo.tet(t)) >= kRelaxBelow) continue;
-    for (int k = 0; k < 4; ++k)
-      if (topo.tet(t)[k] >= frozen.size() || !frozen[topo.tet(t)[k]]) vertices.push_back(topo.tet(t)[k]);
-  }
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  std::vector<uint32_t> low;
+  for (uint32_t t = 0; t < topo.slots(); ++t)
+    if (topo.alive(t) && radius_ratio_of(topo, topo.tet(t)) < kRelaxBelow) low.push_back(t);
+  const std::vector<uint32_t> vertices = free_vertices_of(topo, low, frozen);
   size_t moved = 0;
   for (uint32_t v : vertices) moved += relax_vertex(topo, v, scratch);
   return moved;
@@ -194,14 +203,8 @@ size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratc
 // Step 3 of a pass; the number of vertices moved.
 size_t smoothing_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen,
                       SmoothingScratch& scratch) {
-  std::vector<uint32_t> vertices;
-  for (uint32_t t : tets_below(topo, target))
-    for (int k = 0; k < 4; ++k)
-      if (topo.tet(t)[k] >= frozen.size() || !frozen[topo.tet(t)[k]]) vertices.push_back(topo.tet(t)[k]);
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   size_t moved = 0;
-  for (uint32_t v : vertices) moved += smooth_vertex(topo, v, scratch);
+  for (uint32_t v : free_vertices_of(topo, tets_below(topo, target), frozen)) moved += smooth_vertex(topo, v, scratch);
   return moved;
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "check/quality.hpp"
+#include "core/distance.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
 
@@ -103,8 +104,7 @@ class Star {
   const std::vector<uint32_t>& tets_;
 };
 
-// The point of the segment or triangle (Ericson's region tests, with the
-// query point at the origin) of least norm.
+// The point of segment ab of least norm.
 void least_norm_on_segment(const double* a, const double* b, double d[3]) {
   const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
   const double len = dot3(ab, ab);
@@ -112,38 +112,6 @@ void least_norm_on_segment(const double* a, const double* b, double d[3]) {
   for (int i = 0; i < 3; ++i) d[i] = a[i] + t * ab[i];
 }
 
-void least_norm_on_triangle(const double* a, const double* b, const double* c, double d[3]) {
-  const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double ap[3] = {-a[0], -a[1], -a[2]};
-  const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
-  if (d1 <= 0 && d2 <= 0) {
-    std::copy_n(a, 3, d);
-    return;
-  }
-  const double bp[3] = {-b[0], -b[1], -b[2]};
-  const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
-  if (d3 >= 0 && d4 <= d3) {
-    std::copy_n(b, 3, d);
-    return;
-  }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return least_norm_on_segment(a, b, d);
-  const double cp[3] = {-c[0], -c[1], -c[2]};
-  const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
-  if (d6 >= 0 && d5 <= d6) {
-    std::copy_n(c, 3, d);
-    return;
-  }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return least_norm_on_segment(a, c, d);
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return least_norm_on_segment(b, c, d);
-  const double sum = va + vb + vc;
-  if (!(sum > 0)) return least_norm_on_segment(a, b, d);  // a degenerate triangle
-  const double v = vb / sum, w = vc / sum;
-  for (int i = 0; i < 3; ++i) d[i] = a[i] + v * ab[i] + w * ac[i];
-}
 
 // The volume-weighted mean of the circumcentres of the positive tets of
 // `star` (the optimal Delaunay triangulation update of Chen and Xu), in
@@ -233,7 +201,8 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
 
 // One to three gradients are the usual case (two on average on femur).
 // Up to six, the answer is the origin when it lies in a tet of four of
-// them, else the least norm point of the nearest of their triangles.
+// them, else the point nearest the origin of the nearest of their
+// triangles (three points, or two or one repeated, make a triangle).
 // Beyond, Gilbert's algorithm (move towards the vertex most opposed to d),
 // which converges slowly: alone, a fifth of its runs took 64 iterations.
 void least_norm_direction(const std::vector<double>& gradient, const std::vector<size_t>& active, double d[3]) {
@@ -245,18 +214,18 @@ void least_norm_direction(const std::vector<double>& gradient, const std::vector
   }
   if (n == 2) return least_norm_on_segment(g(0), g(1), d);
   if (n <= 6) {
+    const double origin[3] = {0, 0, 0};
     double best = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < n; ++i)
       for (size_t j = i + 1; j < n; ++j)
         for (size_t k = j + 1; k < n; ++k) {
           double p[3];
-          least_norm_on_triangle(g(i), g(j), g(k), p);
+          closest_point_on_triangle(origin, g(i), g(j), g(k), p);
           if (dot3(p, p) < best) {
             best = dot3(p, p);
             std::copy_n(p, 3, d);
           }
         }
-    const double origin[3] = {0, 0, 0};
     for (size_t i = 0; i < n; ++i)
       for (size_t j = i + 1; j < n; ++j)
         for (size_t k = j + 1; k < n; ++k)
