@@ -51,7 +51,8 @@ struct OptimizeStats {
   double seconds = 0;
   // Wall seconds of the parts, summed over the passes; `measure` is the
   // quality before and after.
-  double topology_seconds = 0, insertion_seconds = 0, smoothing_seconds = 0, measure_seconds = 0;
+  double topology_seconds = 0, insertion_seconds = 0, smoothing_seconds = 0, relaxation_seconds = 0,
+         measure_seconds = 0;
 };
 
 // `frozen`, when given, has one flag per vertex (non-zero: frozen).

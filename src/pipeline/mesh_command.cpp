@@ -520,6 +520,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
           c["topology s"] = n.topology_seconds;
           c["insertion s"] = n.insertion_seconds;
           c["smoothing s"] = n.smoothing_seconds;
+          c["relaxation s"] = n.relaxation_seconds;
           c["measure s"] = n.measure_seconds;
           c["tets"] = s.mesh.num_tets();
           return c;
