@@ -3,7 +3,7 @@
 // with its 3-2 and 4-4 special cases, see flips.hpp) on the tets below the
 // quality target, worst first, then interior vertex insertion where it pays
 // (insertion.hpp), then optimization-based smoothing (smoothing.hpp) of the
-// free vertices of the tets still below the target; after the passes, a
+// free vertices of the tets still below the target or 30 degrees; after the passes, a
 // sweep of multi-face removals and two sweeps of radius-ratio relaxation
 // (relax_vertex), which moves no worst tet down and adds no sliver.
 //
