@@ -1,5 +1,6 @@
-// smooth_vertex (see smoothing.hpp). Lengths are relative to the mean
-// distance from v to its neighbours (`scale`), so the steps are scale-free.
+// smooth_vertex, relax_vertex and least_norm_direction (see smoothing.hpp).
+// Lengths are relative to the mean distance from v to its neighbours
+// (`scale`), so the steps are scale-free.
 #include "optimize/smoothing.hpp"
 
 #include <algorithm>
@@ -111,7 +112,6 @@ void least_norm_on_segment(const double* a, const double* b, double d[3]) {
   const double t = len > 0 ? std::clamp(-dot3(a, ab) / len, 0.0, 1.0) : 0.0;
   for (int i = 0; i < 3; ++i) d[i] = a[i] + t * ab[i];
 }
-
 
 // The volume-weighted mean of the circumcentres of the positive tets of
 // `star` (the optimal Delaunay triangulation update of Chen and Xu), in

@@ -10,6 +10,9 @@
 // every star tet is positive by exact orient3d. The vertex moves only then:
 // never to a worse or invalid place.
 //
+// Also here: the radius-ratio relaxation of one vertex (relax_vertex) and
+// the ascent direction (least_norm_direction).
+//
 // Contract: v is not on the boundary (its star is closed) and not frozen;
 // the caller decides which vertices may move.
 #pragma once
