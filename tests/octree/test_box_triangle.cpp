@@ -110,17 +110,22 @@ TEST(OctreeBoxTriangle, InsideCrossingAndDisjoint) {
   EXPECT_FALSE(meets(s, t, u));  // far away
 }
 
-TEST(OctreeBoxTriangle, MatchesReferenceOnLatticeTriangles) {
-  // Coordinates from a small set around the box: many exact contacts.
-  const double values[] = {-1, -0.5, 0, 0.25, 0.5, 1, 1.5, 2};
-  std::mt19937 rng(3);
+// A random triangle with coordinates from a small set around the unit box
+// (many exact contacts); false when its points are collinear.
+bool lattice_triangle(std::mt19937& rng, double v[3][3]) {
+  static constexpr double kValues[] = {-1, -0.5, 0, 0.25, 0.5, 1, 1.5, 2};
   std::uniform_int_distribution<int> pick(0, 7);
+  for (int i = 0; i < 3; ++i)
+    for (double& x : v[i]) x = kValues[pick(rng)];
+  return !points_collinear(v[0], v[1], v[2]);
+}
+
+TEST(OctreeBoxTriangle, MatchesReferenceOnLatticeTriangles) {
+  std::mt19937 rng(3);
   int hits = 0, total = 0;
   for (int k = 0; k < 40000; ++k) {
     double v[3][3];
-    for (auto& p : v)
-      for (double& x : p) x = values[pick(rng)];
-    if (points_collinear(v[0], v[1], v[2])) continue;
+    if (!lattice_triangle(rng, v)) continue;
     const bool got = box_meets_triangle(kLo, kHi, v[0], v[1], v[2]);
     ASSERT_EQ(got, reference_meets(kLo, kHi, v[0], v[1], v[2])) << k;
     hits += got;
@@ -147,15 +152,12 @@ TEST(OctreeBoxTriangle, MatchesReferenceOnRandomTriangles) {
 // upper faces in by 2^-30 changes no nonzero sign: the closed test on that
 // box is the reference.
 TEST(OctreeBoxTriangle, HalfOpenMatchesShrunkClosedBoxOnLatticeTriangles) {
-  const double values[] = {-1, -0.5, 0, 0.25, 0.5, 1, 1.5, 2};
   std::mt19937 rng(11);
-  std::uniform_int_distribution<int> pick(0, 7), coin(0, 1);
+  std::uniform_int_distribution<int> coin(0, 1);
   int differ = 0, total = 0;
   for (int k = 0; k < 60000; ++k) {
     double v[3][3];
-    for (auto& p : v)
-      for (double& x : p) x = values[pick(rng)];
-    if (points_collinear(v[0], v[1], v[2])) continue;
+    if (!lattice_triangle(rng, v)) continue;
     const bool open[3] = {coin(rng) == 1, coin(rng) == 1, coin(rng) == 1};
     double shrunk[3];
     for (int i = 0; i < 3; ++i) shrunk[i] = open[i] ? kHi[i] - std::ldexp(1.0, -30) : kHi[i];
