@@ -185,14 +185,26 @@ std::vector<uint32_t> free_vertices_of(const TetTopology& topo, const std::vecto
 }
 
 // After the passes: relax_vertex on the free vertices of the tets below
-// kRelaxBelow, in index order; the number moved.
-size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, SmoothingScratch& scratch) {
+// kRelaxBelow, in index order, skipping those with `settled` set; the
+// number moved. relax_vertex depends only on the star's points, so a vertex
+// that stays where it is gets `settled` until it or a neighbour moves: a
+// later sweep would try the same points and refuse them again.
+size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, std::vector<uint8_t>& settled,
+                        SmoothingScratch& scratch) {
   std::vector<uint32_t> low;
   for (uint32_t t = 0; t < topo.slots(); ++t)
     if (topo.alive(t) && radius_ratio_of(topo, topo.tet(t)) < kRelaxBelow) low.push_back(t);
   const std::vector<uint32_t> vertices = free_vertices_of(topo, low, frozen);
+  settled.resize(topo.num_vertices(), 0);
   size_t moved = 0;
-  for (uint32_t v : vertices) moved += relax_vertex(topo, v, scratch);
+  for (uint32_t v : vertices) {
+    if (settled[v]) continue;
+    const bool move = relax_vertex(topo, v, scratch);
+    settled[v] = !move;
+    if (!move) continue;
+    ++moved;
+    for (uint32_t u : scratch.neighbours) settled[u] = 0;
+  }
   return moved;
 }
 
@@ -251,7 +263,9 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       stats.topology_seconds += part.wall();
     }
     part = Stopwatch();
-    for (int sweep = 0; sweep < 2; ++sweep) stats.vertices_relaxed += relaxation_sweep(topo, fixed, scratch);
+    std::vector<uint8_t> settled;
+    for (int sweep = 0; sweep < 2; ++sweep)
+      stats.vertices_relaxed += relaxation_sweep(topo, fixed, settled, scratch);
     stats.relaxation_seconds += part.wall();
     topo.compact();
   }

@@ -291,21 +291,25 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   const double* x = topo.point(v);
   double odt[3];
   const bool has_odt = odt_point(topo, scratch.star, odt);
-  for (const double* target : {has_odt ? odt : centroid, centroid})
+  const double* targets[2] = {odt, centroid};
+  // The cheap tests first: qualities (stopping at the first below the old
+  // worst), then radius ratios, then exact orientation.
+  for (int i = has_odt ? 0 : 1; i < 2; ++i)
     for (const double step : {1.0, 0.5, 0.25}) {
+      const double* target = targets[i];
       const double y[3] = {x[0] + step * (target[0] - x[0]), x[1] + step * (target[1] - x[1]),
                            x[2] + step * (target[2] - x[2])};
-      if (!star.positive(y)) continue;
-      double trial_sum = 0;
       int trial_slivers = 0;
       bool keeps = true;
       for (size_t k = 0; k < n && keeps; ++k) {
         const double q = star.quality(k, y);
         keeps = q >= worst;
         trial_slivers += q < sliver;
-        trial_sum += star.radius_ratio(k, y);
       }
-      if (keeps && trial_slivers <= slivers && trial_sum > sum) {
+      if (!keeps || trial_slivers > slivers) continue;
+      double trial_sum = 0;
+      for (size_t k = 0; k < n; ++k) trial_sum += star.radius_ratio(k, y);
+      if (trial_sum > sum && star.positive(y)) {
         topo.move_vertex(v, y);
         return true;
       }

@@ -31,7 +31,7 @@ struct SmoothingScratch {
   std::vector<double> trial;     // per star tet, at a trial point
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
-  std::vector<uint32_t> neighbours;
+  std::vector<uint32_t> neighbours;  // after relax_vertex(v): v's neighbours, each once
 };
 
 // Moves v when that raises the worst quality of its star; true if it moved.
