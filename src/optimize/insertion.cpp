@@ -137,7 +137,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
     const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
-    if (deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, true)) return true;
+    return deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, true);
   }
   return try_cavity(topo, {t}, centroid, bar, scratch);
 }
