@@ -17,11 +17,14 @@ namespace {
 
 constexpr double kInvalid = -std::numeric_limits<double>::infinity();
 
-// Quality of tet (v0, v1, v2, v3) of `topo`, or kInvalid unless exactly positive.
-double positive_quality(const TetTopology& topo, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
+// Quality of tet (v0, v1, v2, v3) of `topo` when it is above `floor` and
+// the tet is exactly positive, else kInvalid. The searches only want tets
+// above a floor: the exact orientation is then needed for few of them.
+double quality_above(const TetTopology& topo, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3, double floor) {
   const double *p0 = topo.point(v0), *p1 = topo.point(v1), *p2 = topo.point(v2), *p3 = topo.point(v3);
-  if (orient3d(p0, p1, p2, p3) <= 0) return kInvalid;
-  return tet_quality(p0, p1, p2, p3);
+  const double q = tet_quality(p0, p1, p2, p3);
+  if (!(q > floor) || orient3d(p0, p1, p2, p3) <= 0) return kInvalid;
+  return q;
 }
 
 void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
@@ -84,7 +87,7 @@ bool grow(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, in
 double sandwich_quality(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, double floor) {
   double worst = std::numeric_limits<double>::infinity();
   for (int i = 0; i < s.n && worst > floor; ++i)
-    worst = std::min(worst, positive_quality(topo, d, e, s.ring[i], s.ring[(i + 1) % s.n]));
+    worst = std::min(worst, quality_above(topo, d, e, s.ring[i], s.ring[(i + 1) % s.n], floor));
   return worst;
 }
 
@@ -175,8 +178,8 @@ bool face_flip(const TetTopology& topo, uint32_t code, Flip& flip, const double*
   flip.new_quality = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
     const uint32_t r0 = face[k], r1 = face[(k + 1) % 3];
-    const double q = positive_quality(topo, d, e, r0, r1);
-    if (q == kInvalid || (beat && q <= bar)) return false;
+    const double q = quality_above(topo, d, e, r0, r1, bar);
+    if (q == kInvalid) return false;
     flip.new_quality = std::min(flip.new_quality, q);
     add_tet(flip, d, e, r0, r1);
   }
@@ -204,9 +207,9 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip,
       for (int mid = lo + 1; mid < hi; ++mid) {
         double q = std::min(best[lo][mid], best[mid][hi]);
         if (q <= best[lo][hi]) continue;
-        q = std::min(q, positive_quality(topo, r[lo], r[mid], r[hi], ring.b));
+        q = std::min(q, quality_above(topo, r[lo], r[mid], r[hi], ring.b, best[lo][hi]));
         if (q <= best[lo][hi]) continue;
-        q = std::min(q, positive_quality(topo, r[lo], r[hi], r[mid], ring.a));
+        q = std::min(q, quality_above(topo, r[lo], r[hi], r[mid], ring.a, best[lo][hi]));
         if (q <= best[lo][hi]) continue;
         best[lo][hi] = q;
         split[lo][hi] = mid;
