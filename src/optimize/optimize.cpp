@@ -10,7 +10,7 @@
 //     30 degrees, whichever is lower, in index order (inserted vertices
 //     are free).
 // After the passes, one sweep of multi-face removals (multi_face_pass),
-// then two relaxation sweeps (relaxation_sweep). Each change of the passes
+// then the relaxation sweeps (relaxation_sweep, two by default). Each change of the passes
 // strictly raises the ascending sequence of tet qualities in lexicographic
 // order; with the caps this bounds the work.
 #include "optimize/optimize.hpp"
@@ -264,7 +264,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     }
     part = Stopwatch();
     std::vector<uint8_t> settled;
-    for (int sweep = 0; sweep < 2; ++sweep)
+    for (int sweep = 0; sweep < options.relaxation_sweeps; ++sweep)
       stats.vertices_relaxed += relaxation_sweep(topo, fixed, settled, scratch);
     stats.relaxation_seconds += part.wall();
     topo.compact();

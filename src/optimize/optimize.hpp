@@ -35,6 +35,7 @@ struct OptimizeOptions {
   double quality_target_deg = 40;
   bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
   bool multi_face_sweep = true;  // multi-face removals after the passes
+  int relaxation_sweeps = 2;     // radius-ratio relaxation sweeps at the end
 };
 
 struct OptimizeStats {

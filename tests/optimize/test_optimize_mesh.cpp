@@ -165,10 +165,14 @@ TEST(OptimizeMesh, MultiFaceSweepMakesNothingWorse) {
   for (const char* name : {"good/sphere966.off", "good/eight.off", "good/ellipsoid.off"}) {
     const TetMesh unoptimized_mesh = unoptimized(name, "");
     TetMesh mesh = unoptimized_mesh;
-    const OptimizeStats stats = optimize_mesh(mesh, OptimizeOptions{});
+    // Without the relaxation after it, which starts from different meshes
+    // in the two runs and may end either a little higher.
+    OptimizeOptions sweep;
+    sweep.relaxation_sweeps = 0;
+    const OptimizeStats stats = optimize_mesh(mesh, sweep);
     removals += stats.multi_face_removals;
     TetMesh passes_only = unoptimized_mesh;
-    OptimizeOptions no_sweep;
+    OptimizeOptions no_sweep = sweep;
     no_sweep.multi_face_sweep = false;
     const OptimizeStats base = optimize_mesh(passes_only, no_sweep);
     EXPECT_EQ(base.multi_face_removals, 0u) << name;
@@ -205,6 +209,30 @@ TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
   for (const auto& step : unoptimized_report["steps"]) EXPECT_NE(step["name"], "optimize");
   EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --quality-target 95").exit_code, 2);
   EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --optimize -1").exit_code, 2);
+}
+
+
+// The edge splits of the insertion step (insertion.hpp, step 3) make most
+// of its vertices: on these CAD parts, whose thin walls leave many bad tets
+// between surface vertices, the share of tets under 10 degrees falls to
+// under a third of what the optimizer leaves without insertion (u 2.7 %
+// against 59.5 %, part 9.7 % against 42.2 %; without the splits part
+// stays at 33.9 %).
+TEST(OptimizeMesh, EdgeSplitsCutTheTetsUnderTenDegrees) {
+  for (const char* name : {"good/u.off", "good/part.off"}) {
+    const TetMesh unoptimized_mesh = unoptimized(name, "");
+    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
+    const OptimizeStats inserted = optimize_mesh(with, OptimizeOptions{});
+    OptimizeOptions no_insertion;
+    no_insertion.insert_vertices = false;
+    const OptimizeStats base = optimize_mesh(without, no_insertion);
+    const double share = static_cast<double>(inserted.after.dihedral_under_10) / inserted.after.tets;
+    const double base_share = static_cast<double>(base.after.dihedral_under_10) / base.after.tets;
+    EXPECT_LT(share, base_share / 3) << name << ": " << share << " against " << base_share;
+    EXPECT_GE(inserted.after.min_dihedral_deg, inserted.before.min_dihedral_deg) << name;
+    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
+    EXPECT_EQ(boundary_faces(with), boundary_faces(unoptimized_mesh)) << name;
+  }
 }
 
 }  // namespace
