@@ -40,6 +40,34 @@ constexpr int kFacePairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}
 
 double dihedral(V3 nk, V3 nl) { return std::atan2(norm(cross(nk, nl)), -dot(nk, nl)); }
 
+// Edge vectors from p0 and the face normals of the file comment.
+struct TetFrame {
+  V3 a, b, c, n[4];
+  TetFrame(const double* p0, const double* p1, const double* p2, const double* p3)
+      : a(sub(p1, p0)),
+        b(sub(p2, p0)),
+        c(sub(p3, p0)),
+        n{cross(sub(c, a), sub(b, a)), cross(b, c), cross(c, a), cross(a, b)} {}
+};
+
+// The kFacePairs indices of the smallest (lo) and largest (hi) dihedral
+// angle, by their cosines (no trigonometry); false when a face has zero
+// area.
+bool extreme_dihedrals(const V3 (&n)[4], int& lo, int& hi) {
+  double len[4];
+  for (int k = 0; k < 4; ++k) len[k] = norm(n[k]);
+  if (!(len[0] > 0 && len[1] > 0 && len[2] > 0 && len[3] > 0)) return false;
+  lo = hi = 0;
+  double cos_lo = -2, cos_hi = 2;
+  for (int e = 0; e < 6; ++e) {
+    const int k = kFacePairs[e][0], l = kFacePairs[e][1];
+    const double cosine = -dot(n[k], n[l]) / (len[k] * len[l]);
+    if (cosine > cos_lo) cos_lo = cosine, lo = e;
+    if (cosine < cos_hi) cos_hi = cosine, hi = e;
+  }
+  return true;
+}
+
 bool finite_point(const double* p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
@@ -60,23 +88,12 @@ double tet_radius_ratio(const double* p0, const double* p1, const double* p2, co
 
 TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3) {
   TetShape s;
-  V3 a = sub(p1, p0), b = sub(p2, p0), c = sub(p3, p0);
-  V3 n[4] = {cross(sub(c, a), sub(b, a)), cross(b, c), cross(c, a), cross(a, b)};
-  double d = dot(a, n[1]);
-  s.volume = d / 6;
-
-  double len[4];
-  for (int k = 0; k < 4; ++k) len[k] = norm(n[k]);
-  if (len[0] > 0 && len[1] > 0 && len[2] > 0 && len[3] > 0) {
-    // The smallest angle has the largest cosine: one atan2 per extreme.
-    int lo = 0, hi = 0;
-    double cos_lo = -2, cos_hi = 2;
-    for (int e = 0; e < 6; ++e) {
-      int k = kFacePairs[e][0], l = kFacePairs[e][1];
-      double cosine = -dot(n[k], n[l]) / (len[k] * len[l]);
-      if (cosine > cos_lo) cos_lo = cosine, lo = e;
-      if (cosine < cos_hi) cos_hi = cosine, hi = e;
-    }
+  const TetFrame f(p0, p1, p2, p3);
+  const V3 &a = f.a, &b = f.b, &c = f.c;
+  const V3(&n)[4] = f.n;
+  s.volume = dot(a, n[1]) / 6;
+  int lo = 0, hi = 0;
+  if (extreme_dihedrals(n, lo, hi)) {
     s.min_dihedral_rad = dihedral(n[kFacePairs[lo][0]], n[kFacePairs[lo][1]]);
     s.max_dihedral_rad = dihedral(n[kFacePairs[hi][0]], n[kFacePairs[hi][1]]);
   } else {
@@ -93,6 +110,16 @@ TetShape tet_shape(const double* p0, const double* p1, const double* p2, const d
   s.edge_ratio =
       *shortest > 0 ? std::sqrt(*longest / *shortest) : std::numeric_limits<double>::infinity();
   return s;
+}
+
+bool widest_dihedral_faces(const double* p0, const double* p1, const double* p2, const double* p3, int& k,
+                           int& l) {
+  const TetFrame f(p0, p1, p2, p3);
+  int lo = 0, hi = 0;
+  if (!extreme_dihedrals(f.n, lo, hi)) return false;
+  k = kFacePairs[hi][0];
+  l = kFacePairs[hi][1];
+  return true;
 }
 
 QualityStats measure_quality(const TetMesh& mesh) {

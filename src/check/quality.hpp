@@ -38,6 +38,11 @@ struct TetShape {
   double volume;  // signed: positive when orient3d(p0, p1, p2, p3) > 0
 };
 TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3);
+// The faces opposite p_k and p_l (k < l) that meet at the tet's largest
+// dihedral angle, as tet_shape finds it; their shared edge joins the other
+// two vertices. False when a face has zero area.
+bool widest_dihedral_faces(const double* p0, const double* p1, const double* p2, const double* p3, int& k,
+                           int& l);
 // tet_shape's radius_ratio alone (3 inradius / circumradius; 1 for the
 // regular tet, 0 for a flat one), without the angles.
 double tet_radius_ratio(const double* p0, const double* p1, const double* p2, const double* p3);

@@ -3,11 +3,10 @@
 #include "optimize/insertion.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <vector>
 
-#include "check/tet_faces.hpp"
+#include "check/quality.hpp"
 #include "core/kernel_point.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
@@ -111,35 +110,6 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
   return faces;
 }
 
-// The local vertices (k, l) of the edge of tet t opposite its largest
-// dihedral angle (at edge (i, j), between the faces opposite k and l).
-void across_widest_angle(const TetTopology& topo, uint32_t t, int& k, int& l) {
-  double normal[4][3];
-  for (int f = 0; f < 4; ++f) {
-    const double* a = topo.point(topo.tet(t)[kOutwardFace[f][0]]);
-    const double* b = topo.point(topo.tet(t)[kOutwardFace[f][1]]);
-    const double* c = topo.point(topo.tet(t)[kOutwardFace[f][2]]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    normal[f][0] = u[1] * w[2] - u[2] * w[1];
-    normal[f][1] = u[2] * w[0] - u[0] * w[2];
-    normal[f][2] = u[0] * w[1] - u[1] * w[0];
-  }
-  // The interior angle between faces f and g has cosine -n_f.n_g / (|n_f| |n_g|).
-  double widest = -2;
-  for (int f = 0; f < 4; ++f)
-    for (int g = f + 1; g < 4; ++g) {
-      const double* m = normal[f];
-      const double* n = normal[g];
-      const double norms = std::sqrt((m[0] * m[0] + m[1] * m[1] + m[2] * m[2]) * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
-      const double cosine = norms > 0 ? (m[0] * n[0] + m[1] * n[1] + m[2] * n[2]) / norms : -2;  // of -angle
-      if (cosine > widest) {
-        widest = cosine;
-        k = f;
-        l = g;
-      }
-    }
-}
-
 }  // namespace
 
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
@@ -161,10 +131,12 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
     if (kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, true)) return true;
     // An edge split (step 3 of insertion.hpp).
+    // (The trials above may have grown the tet array: t's vertices are read again.)
+    const uint32_t* u = topo.tet(t);
     int k = 0, l = 1;
-    across_widest_angle(topo, t, k, l);
     TetTopology::Ring ring;
-    if (topo.edge_ring(t, k, l, ring)) {
+    if (widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
+        topo.edge_ring(t, k, l, ring)) {
       const double* a = topo.point(ring.a);
       const double* b = topo.point(ring.b);
       const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};

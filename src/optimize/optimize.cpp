@@ -10,9 +10,9 @@
 //     30 degrees, whichever is lower, in index order (inserted vertices
 //     are free).
 // After the passes, one sweep of multi-face removals (multi_face_pass),
-// then the relaxation sweeps (relaxation_sweep, two by default). Each change of the passes
-// strictly raises the ascending sequence of tet qualities in lexicographic
-// order; with the caps this bounds the work.
+// then the relaxation sweeps (relaxation_sweep, two by default). Each
+// change of the passes strictly raises the ascending sequence of tet
+// qualities in lexicographic order; with the caps this bounds the work.
 #include "optimize/optimize.hpp"
 
 #include <algorithm>

@@ -282,10 +282,8 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   const double sliver = quality_of_angle(10);
   double worst = std::numeric_limits<double>::infinity(), sum = 0;
   int slivers = 0;
-  size_t lead = 0;  // the star tet a trial tests first: the worst, then the last to fail
   for (size_t k = 0; k < n; ++k) {
     const double q = topo.quality(scratch.star[k]);
-    if (q < worst) lead = k;
     worst = std::min(worst, q);
     slivers += q < sliver;
     sum += star.radius_ratio(k, topo.point(v));
@@ -303,14 +301,10 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
                            x[2] + step * (target[2] - x[2])};
       int trial_slivers = 0;
       bool keeps = true;
-      for (size_t i = 0; i <= n && keeps; ++i) {
-        // i = 0 is the lead tet, i = k + 1 star tet k (the lead skipped).
-        const size_t k = i == 0 ? lead : i - 1;
-        if (i > 0 && k == lead) continue;
+      for (size_t k = 0; k < n && keeps; ++k) {
         const double q = star.quality(k, y);
         keeps = q >= worst;
         trial_slivers += q < sliver;
-        if (!keeps) lead = k;
       }
       if (!keeps || trial_slivers > slivers) continue;
       double trial_sum = 0;
