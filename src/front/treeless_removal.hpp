@@ -37,7 +37,10 @@
 //     (across the edges of each face in turn, lower face index first) of at most 64, else 24,
 //     else 8 of those faces still alive around it, whose deepest kernel
 //     point q, when it sees every patch face exactly, is added and coned to
-//     the patch faces where valid (as in step 3);
+//     the patch faces where valid (as in step 3). A patch is open: its
+//     kernel is searched in its bounding box lifted along its area-weighted
+//     normal by 0.75 times its mean edge length (kPatchLift), so that q can
+//     rise above a nearly flat patch instead of lying almost on it;
 //  5. advances: each face still alive, in the same order, gets a tet on a
 //     front vertex near the ideal apex (above the centroid at the height of
 //     the regular tet) or on a new, well spaced vertex there or lower,
