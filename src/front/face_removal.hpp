@@ -57,7 +57,8 @@ struct RemovalOptions {
   double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
   // Tree-less removals only: rounds in a row without a smaller front before
-  // they give up (treeless_removal.hpp; the corpus closes in at most 25).
+  // they give up (treeless_removal.hpp; the corpus closes in at most 25
+  // rounds, refined thin walls such as t13 r1 and r2 in 66 and 75).
   size_t stall_rounds = 32;
 };
 
