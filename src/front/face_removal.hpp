@@ -58,8 +58,9 @@ struct RemovalOptions {
   double min_quality = 0;   // targets whose tet has q below this are ignored
   // Tree-less removals only: rounds in a row without a smaller front before
   // they give up (treeless_removal.hpp; the corpus closes in at most 25
-  // rounds, refined thin walls such as t13 r1 and r2 in 66 and 75).
-  size_t stall_rounds = 32;
+  // rounds; t13 r2 closes in 132, with new smallest fronts more than 32
+  // rounds apart).
+  size_t stall_rounds = 64;
 };
 
 // What earlier calls learnt: per face slot, the front's change counter when
