@@ -8,7 +8,7 @@
 
 namespace partet {
 
-KernelPoint deepest_kernel_point(const std::vector<double>& triangles) {
+KernelPoint deepest_kernel_point(const std::vector<double>& triangles, const double* lift) {
   KernelPoint r;
   const size_t n = triangles.size() / 9;
   if (n == 0) return r;
@@ -21,6 +21,11 @@ KernelPoint deepest_kernel_point(const std::vector<double>& triangles) {
     for (int k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], triangles[3 * i + k]);
       hi[k] = std::max(hi[k], triangles[3 * i + k]);
+    }
+  if (lift)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] += std::min(lift[k], 0.0);
+      hi[k] += std::max(lift[k], 0.0);
     }
   const double diagonal = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                                     (hi[2] - lo[2]) * (hi[2] - lo[2]));

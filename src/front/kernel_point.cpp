@@ -3,7 +3,7 @@
 
 namespace partet {
 
-KernelPoint deepest_kernel_point(const Front& front, const std::vector<uint32_t>& faces) {
+KernelPoint deepest_kernel_point(const Front& front, const std::vector<uint32_t>& faces, const double* lift) {
   std::vector<double> triangles;
   triangles.reserve(9 * faces.size());
   for (uint32_t f : faces)
@@ -11,7 +11,7 @@ KernelPoint deepest_kernel_point(const Front& front, const std::vector<uint32_t>
       const double* p = front.point(front.face(f)[i]);
       triangles.insert(triangles.end(), p, p + 3);
     }
-  return deepest_kernel_point(triangles);
+  return deepest_kernel_point(triangles, lift);
 }
 
 }  // namespace partet

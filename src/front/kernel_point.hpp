@@ -11,7 +11,9 @@
 
 namespace partet {
 
-// Faces: alive front faces. The search box is the faces' bounding box.
-KernelPoint deepest_kernel_point(const Front& front, const std::vector<uint32_t>& faces);
+// Faces: alive front faces. The search box is the faces' bounding box,
+// swept by `lift` when given (core/kernel_point.hpp).
+KernelPoint deepest_kernel_point(const Front& front, const std::vector<uint32_t>& faces,
+                                 const double* lift = nullptr);
 
 }  // namespace partet

@@ -31,6 +31,12 @@ constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown)
 constexpr int kMaxGrowth = 8;
 constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
 constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
+// A patch's kernel point is searched in its own bounding box, and when that
+// point is less deep than kPlainDepth mean edge lengths, in the box lifted
+// along the patch's normal by kPatchLift mean edge lengths
+// (treeless_removal.hpp, step 4).
+constexpr double kPlainDepth = 0.2;
+constexpr double kPatchLift = 0.75;
 
 class TreelessRemover {
  public:
@@ -46,6 +52,10 @@ class TreelessRemover {
   void local_tree_pass(const std::vector<uint32_t>& seeds);
   // Sum of the squared edge lengths of face f.
   double face_size(uint32_t f) const;
+  // Sets `lift` to the patch's area-weighted unit normal times kPatchLift
+  // times its mean edge length (zero when the normals cancel) and returns
+  // that mean edge length (the mean of its faces' root-mean-square edges).
+  double patch_lift(const std::vector<uint32_t>& patch, double lift[3]) const;
   uint32_t add_vertex(const double* p);
   void drop_vertex();
   // Leaves over the box of the given points; false when one is owned by
@@ -116,6 +126,25 @@ double TreelessRemover::face_size(uint32_t f) const {
   return squared_distance(front_.point(t[0]), front_.point(t[1])) +
          squared_distance(front_.point(t[1]), front_.point(t[2])) +
          squared_distance(front_.point(t[2]), front_.point(t[0]));
+}
+
+double TreelessRemover::patch_lift(const std::vector<uint32_t>& patch, double lift[3]) const {
+  double normal[3] = {0, 0, 0}, edge = 0;
+  for (uint32_t f : patch) {
+    const uint32_t* t = front_.face(f);
+    const double *pa = front_.point(t[0]), *pb = front_.point(t[1]), *pc = front_.point(t[2]);
+    const double e1[3] = {pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
+    const double e2[3] = {pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]};
+    normal[0] += e1[1] * e2[2] - e1[2] * e2[1];
+    normal[1] += e1[2] * e2[0] - e1[0] * e2[2];
+    normal[2] += e1[0] * e2[1] - e1[1] * e2[0];
+    edge += std::sqrt(face_size(f) / 3);
+  }
+  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  edge /= static_cast<double>(patch.size());
+  const double scale = length > 0 ? kPatchLift * edge / length : 0;
+  for (int k = 0; k < 3; ++k) lift[k] = normal[k] * scale;
+  return edge;
 }
 
 uint32_t TreelessRemover::add_vertex(const double* p) {
@@ -297,7 +326,12 @@ size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
               patch.push_back(it->second);
         }
       }
-      const KernelPoint kernel = deepest_kernel_point(front_, patch);
+      // The point in the patch's own box when it is deep enough, else in
+      // the lifted box.
+      double lift[3];
+      const double edge = patch_lift(patch, lift);
+      KernelPoint kernel = deepest_kernel_point(front_, patch);
+      if (!kernel.found || !(kernel.depth >= kPlainDepth * edge)) kernel = deepest_kernel_point(front_, patch, lift);
       if (!kernel.found || !sees_all(patch, kernel.point) || cone(patch, kernel.point) == 0) continue;
       ++counts_.partial_cones;
       ++made;

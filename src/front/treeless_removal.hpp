@@ -8,7 +8,7 @@
 //
 // Rounds, until the front is empty, a round changes nothing, a budget is
 // spent (new vertices: 4 x the alive faces at the start + 64; deleted
-// tets: 64 x those faces + 1024), or options.stall_rounds (default 32)
+// tets: 64 x those faces + 1024), or options.stall_rounds (default 64)
 // rounds in a row end without a front smaller than every earlier one (the
 // call has stalled: a front that diverges, as on thin walls of long skinny
 // triangles without a templated core, would otherwise churn for hundreds
@@ -37,7 +37,12 @@
 //     (across the edges of each face in turn, lower face index first) of at most 64, else 24,
 //     else 8 of those faces still alive around it, whose deepest kernel
 //     point q, when it sees every patch face exactly, is added and coned to
-//     the patch faces where valid (as in step 3);
+//     the patch faces where valid (as in step 3). A patch is open and its
+//     kernel unbounded: when the deepest point in the patch's bounding box
+//     is less deep than 0.2 mean edge lengths (kPlainDepth), q is searched
+//     in that box lifted along the patch's area-weighted normal by 0.75
+//     mean edge lengths (kPatchLift), so that it rises above a nearly flat
+//     patch instead of lying almost on it;
 //  5. advances: each face still alive, in the same order, gets a tet on a
 //     front vertex near the ideal apex (above the centroid at the height of
 //     the regular tet) or on a new, well spaced vertex there or lower,

@@ -124,17 +124,16 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
   }
 }
 
-// part (a CAD part of thin walls and needle triangles, no templated core
-// in most of it): its front does not shrink in every round, yet closes.
-// With stall_rounds 1 the call stops at the first round that does not
-// shrink it, stalled, and leaves a valid partial mesh.
+// sphere966: its front does not shrink in every round, yet closes. With
+// stall_rounds 1 the call stops at the first round that does not shrink
+// it, stalled, and leaves a valid partial mesh.
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
-  const Meshed stopped = mesh_file("good/part.off", impatient);
+  const Meshed stopped = mesh_file("good/sphere966.off", impatient);
   EXPECT_TRUE(stopped.counts.stalled);
   EXPECT_GT(stopped.faces_left, 0u);
-  const Meshed closed = mesh_file("good/part.off");
+  const Meshed closed = mesh_file("good/sphere966.off");
   EXPECT_FALSE(closed.counts.stalled);
   EXPECT_EQ(closed.faces_left, 0u);
   EXPECT_LT(stopped.counts.rounds, closed.counts.rounds);
