@@ -14,6 +14,7 @@
 #include "core/predicates.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -34,20 +35,40 @@ struct ExponentRange {
   int high = INT_MIN;
 };
 
+// From the bits (frexp and ldexp cost a library call each, and the exact
+// stages run hundreds of thousands of times per mesh): for a nonzero finite
+// x, |x| < 2^high and x is a multiple of 2^low.
+void binary_exponents(double x, int& high, int& low) {
+  const uint64_t bits = std::bit_cast<uint64_t>(x);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  uint64_t mantissa = bits & ((uint64_t{1} << 52) - 1);
+  if (biased != 0) mantissa |= uint64_t{1} << 52;
+  const int unit = biased != 0 ? biased - 1075 : -1074;  // exponent of the mantissa's unit bit
+  high = unit + 64 - std::countl_zero(mantissa);
+  low = unit + std::countr_zero(mantissa);
+}
+
 ExponentRange exponent_range(const double* const* points, int count, int dim) {
   ExponentRange r;
   for (int i = 0; i < count; ++i) {
     for (int k = 0; k < dim; ++k) {
       const double x = points[i][k];
       if (x == 0) continue;
-      int e;
-      std::frexp(x, &e);  // |x| < 2^e
-      const int low = exact::lowest_bit_exponent(x);
-      if (e > r.high) r.high = e;
+      int high, low;
+      binary_exponents(x, high, low);
+      if (high > r.high) r.high = high;
       if (low < r.low) r.low = low;
     }
   }
   return r;
+}
+
+// x * 2^shift, exact when the result is a normal double or zero: one
+// multiplication when 2^shift is itself a normal double.
+double scale_by_power_of_two(double x, int shift) {
+  if (shift >= -1022 && shift <= 1023)
+    return x * std::bit_cast<double>(static_cast<uint64_t>(shift + 1023) << 52);
+  return std::ldexp(x, shift);
 }
 
 // Inputs to a degree-d determinant may be multiples of 2^low and below
@@ -77,7 +98,7 @@ template <int Count, int Dim>
 void scaled_copy(const double* const* points, int shift, double (&out)[Count][Dim]) {
   for (int i = 0; i < Count; ++i)
     for (int k = 0; k < Dim; ++k)
-      out[i][k] = shift == 0 ? points[i][k] : std::ldexp(points[i][k], shift);
+      out[i][k] = shift == 0 ? points[i][k] : scale_by_power_of_two(points[i][k], shift);
 }
 
 // The determinants, over any exact number type, from coordinate differences.
@@ -163,7 +184,7 @@ __extension__ typedef __int128 Int128;
 int orient3d_small_integers(const double* const* p, int low) {
   int64_t m[4][3];
   for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) m[i][k] = static_cast<int64_t>(std::ldexp(p[i][k], -low));
+    for (int k = 0; k < 3; ++k) m[i][k] = static_cast<int64_t>(scale_by_power_of_two(p[i][k], -low));
   int64_t u[3], v[3], w[3];
   for (int k = 0; k < 3; ++k) {
     u[k] = m[1][k] - m[0][k];
