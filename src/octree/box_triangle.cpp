@@ -165,6 +165,78 @@ double segment_segment_dist2(const double* p1, const double* q1, const double* p
   return dist2(x1, x2);
 }
 
+// The separating-axis test in doubles with error bounds: -1 when the plane
+// normal or an edge axis separates the box and the triangle by more than
+// the rounding error, +1 when every axis (box axes strictly) shows an
+// overlap larger than it, 0 when unsure (touching or nearly so: the exact
+// test decides). Overlap beyond the error on all 13 axes means the closed
+// sets meet, and so do the box with its upper faces pulled in by an
+// infinitesimal. Bounds: with M the largest coordinate magnitude and D the
+// largest edge component, an edge-axis projection is off by under 2^-47 M D
+// and a normal projection by under 2^-46 M D^2 (a few roundings per
+// product); 2^-40 leaves a wide margin. Magnitudes where a product could
+// underflow or overflow and break those relative bounds are left to the
+// exact test.
+int separation_filter(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
+  double m = 0, d = 0;
+  const double* v[3] = {a, b, c};
+  double e[3][3];  // e[k] = v[k + 1] - v[k]
+  for (int k = 0; k < 3; ++k) {
+    sub(v[(k + 1) % 3], v[k], e[k]);
+    for (int i = 0; i < 3; ++i) {
+      m = std::max({m, std::fabs(v[k][i]), std::fabs(lo[i]), std::fabs(hi[i])});
+      d = std::max(d, std::fabs(e[k][i]));
+    }
+  }
+  if (d < 0x1p-500 || m > 0x1p500) return 0;
+  bool meets = true;
+  // Box axes: strict overlap (the bounding-box test has already rejected
+  // the disjoint cases).
+  for (int i = 0; i < 3; ++i) {
+    const double tlo = std::min({a[i], b[i], c[i]}), thi = std::max({a[i], b[i], c[i]});
+    meets = meets && thi > lo[i] && tlo < hi[i];
+  }
+  double centre[3], half[3], dc[3];
+  for (int i = 0; i < 3; ++i) {
+    centre[i] = 0.5 * (lo[i] + hi[i]);
+    half[i] = 0.5 * (hi[i] - lo[i]);
+    dc[i] = centre[i] - a[i];
+  }
+  // The plane normal: the box's projection is centred at n.(centre - a)
+  // with radius sum |n_i| half_i; the triangle projects to 0.
+  double n[3];
+  n[0] = e[0][1] * (-e[2][2]) - e[0][2] * (-e[2][1]);
+  n[1] = e[0][2] * (-e[2][0]) - e[0][0] * (-e[2][2]);
+  n[2] = e[0][0] * (-e[2][1]) - e[0][1] * (-e[2][0]);
+  const double plane_error = 0x1p-40 * m * d * d;
+  const double offset = std::fabs(dot(n, dc));
+  const double radius = std::fabs(n[0]) * half[0] + std::fabs(n[1]) * half[1] + std::fabs(n[2]) * half[2];
+  if (offset - radius > plane_error) return -1;
+  meets = meets && radius - offset > plane_error;
+  // Edge k crossed with box axis x_i: axis components (kept axes j, l of
+  // the projection dropping i) are (-e_l, e_j) up to sign.
+  const double edge_error = 0x1p-40 * m * d;
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, l = (i + 2) % 3;
+      const double aj = -e[k][l], al = e[k][j];
+      if (aj == 0 && al == 0) continue;  // the edge is along x_i: no axis
+      double plo = 0, phi = 0;  // the triangle's projection, relative to a
+      for (int w = 1; w < 3; ++w) {
+        const double p = aj * (v[w][j] - a[j]) + al * (v[w][l] - a[l]);
+        plo = std::min(plo, p);
+        phi = std::max(phi, p);
+      }
+      const double mid = aj * dc[j] + al * dc[l];
+      const double r = std::fabs(aj) * half[j] + std::fabs(al) * half[l];
+      const double gap = std::max(plo - (mid + r), (mid - r) - phi);
+      if (gap > edge_error) return -1;
+      meets = meets && -gap > edge_error;
+    }
+  }
+  return meets ? 1 : 0;
+}
+
 // The separating-axis test of box_triangle.hpp. `open` (nullptr: none)
 // marks the axes whose upper face is left out of the box: the box is then
 // [lo, hi - eps] on those axes for an infinitesimal eps > 0, which meets the
@@ -179,6 +251,8 @@ bool box_meets_triangle_impl(const double* lo, const double* hi, const bool* ope
     if (std::max({a[i], b[i], c[i]}) < lo[i] || tlo > hi[i] || (open && open[i] && tlo == hi[i])) return false;
   }
   if (point_in_box(a, lo, hi, open) || point_in_box(b, lo, hi, open) || point_in_box(c, lo, hi, open)) return true;
+  const int filtered = separation_filter(lo, hi, a, b, c);
+  if (filtered != 0) return filtered > 0;
   double corner[8][3];
   box_corners(lo, hi, corner);
   // normal[k]: sign of component k of (b - a) x (c - a), which is also the
