@@ -150,7 +150,7 @@ void Front::list_face(uint32_t f, bool stamp) {
     const bool vertex_leaf = leaf == vertex_leaf_[a] || leaf == vertex_leaf_[b] || leaf == vertex_leaf_[c];
     if (!vertex_leaf) {
       double leaf_lo[3], leaf_hi[3];
-      leaf_box(tree_, root_, leaf, leaf_lo, leaf_hi);
+      query_.leaf_box(root_, leaf, leaf_lo, leaf_hi);
       const bool open[3] = {!closed_lists_ && leaf_hi[0] < root_hi[0], !closed_lists_ && leaf_hi[1] < root_hi[1],
                             !closed_lists_ && leaf_hi[2] < root_hi[2]};
       if (!box_meets_triangle_half_open(leaf_lo, leaf_hi, open, point(a), point(b), point(c))) continue;

@@ -18,7 +18,9 @@
 // only the box corner that is extreme along the axis, and that corner is
 // known exactly: per coordinate, from the sign of a coordinate difference
 // (edge axes) or of the projected triangle's orientation (the normal). A
-// triangle vertex inside the box is accepted first, as a shortcut.
+// triangle vertex inside the box is accepted first, as a shortcut, and the
+// same axes in doubles with error bounds decide the clear cases (most of
+// them) before any exact predicate runs.
 #pragma once
 
 namespace partet {

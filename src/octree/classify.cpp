@@ -141,7 +141,7 @@ void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& ro
       const uint32_t edge = octant_edge(tree.level[leaf]);
       const double h = edge * root.unit;
       double blo[3], bhi[3];
-      leaf_box(tree, root, leaf, blo, bhi);
+      query.leaf_box(root, leaf, blo, bhi);
       for (const NearRegion& r : batch) {
         bool in_region = true;
         for (int i = 0; i < 3; ++i) in_region = in_region && a[i] <= r.hi[i] && a[i] + (edge - 1) >= r.lo[i];

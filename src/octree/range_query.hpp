@@ -51,6 +51,12 @@ class LeafRangeQuery {
       hi[i] = lo[i] + h;
     }
   }
+  // The closed space box of leaf `leaf` (as leaf_box in octree.hpp, from
+  // the stored anchor instead of decoding the key).
+  void leaf_box(const RootCube& root, size_t leaf, double* lo, double* hi) const {
+    const uint32_t* a = &anchor_[3 * leaf];
+    octant_box(root, a[0], a[1], a[2], tree_.level[leaf], lo, hi);
+  }
 
  private:
   // First leaf whose key is above `key` (the leaf containing it is the one

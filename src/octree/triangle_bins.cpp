@@ -46,7 +46,7 @@ LeafTriangles bin_triangles(const LinearOctree& tree, const SurfaceMesh& s, cons
     leaves_over_triangle_box(query, root, a, b, c, leaves);
     for (size_t leaf : leaves) {
       double blo[3], bhi[3];
-      leaf_box(tree, root, leaf, blo, bhi);
+      query.leaf_box(root, leaf, blo, bhi);
       if (!box_meets_triangle(blo, bhi, a, b, c)) continue;
       pair_leaf.push_back(static_cast<uint32_t>(leaf));
       pair_tri.push_back(t);

@@ -147,6 +147,34 @@ TEST(OctreeBoxTriangle, MatchesReferenceOnRandomTriangles) {
   }
 }
 
+// The floating-point filter in front of the exact test must leave
+// near-touching cases to it: a small box far from the origin, triangles
+// with a vertex a few ulps off a box corner, edge or face and the others
+// on either side of the box's planes.
+TEST(OctreeBoxTriangle, MatchesReferenceNearTouchingFarFromOrigin) {
+  std::mt19937 rng(17);
+  const double lo[3] = {1e6, -2e6 + 0.375, 3e6}, hi[3] = {1e6 + 0x1p-10, -2e6 + 0.375 + 0x1p-10, 3e6 + 0x1p-10};
+  std::uniform_int_distribution<int> ulps(-3, 3), pick(0, 2);
+  std::uniform_real_distribution<double> spread(-2, 2);
+  int hits = 0;
+  for (int k = 0; k < 40000; ++k) {
+    double v[3][3];
+    for (int i = 0; i < 3; ++i) {
+      // Vertex 0: each coordinate on lo, on hi or inside, nudged by ulps.
+      const int where = pick(rng);
+      double x = where == 0 ? lo[i] : (where == 1 ? hi[i] : 0.5 * (lo[i] + hi[i]));
+      for (int u = ulps(rng); u != 0; u += u > 0 ? -1 : 1) x = std::nextafter(x, u > 0 ? HUGE_VAL : -HUGE_VAL);
+      v[0][i] = x;
+      for (int j = 1; j < 3; ++j) v[j][i] = lo[i] + spread(rng) * 0x1p-10;
+    }
+    const bool got = box_meets_triangle(lo, hi, v[0], v[1], v[2]);
+    ASSERT_EQ(got, reference_meets(lo, hi, v[0], v[1], v[2])) << k;
+    hits += got;
+  }
+  EXPECT_GT(hits, 1000);
+  EXPECT_LT(hits, 39000);
+}
+
 // Half-open boxes: on lattice coordinates (multiples of 1/4 in [-1, 2]) every
 // predicate value is a multiple of 2^-12 at least, so pulling the open
 // upper faces in by 2^-30 changes no nonzero sign: the closed test on that
