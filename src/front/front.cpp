@@ -3,6 +3,7 @@
 #include "front/front.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.hpp"
 #include "octree/box_triangle.hpp"
@@ -29,6 +30,17 @@ uint64_t mix(uint64_t h) {
   h ^= h >> 27;
   h *= 0x94D049BB133111EBull;
   return h ^ (h >> 31);
+}
+
+// The largest float not above x, the smallest not below it.
+float float_below(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -HUGE_VALF) : f;
+}
+
+float float_above(double x) {
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, HUGE_VALF) : f;
 }
 
 }  // namespace
@@ -140,6 +152,11 @@ void Front::list_face(uint32_t f, bool stamp) {
   for (int k = 0; k < 3; ++k) {
     lo[k] = std::min({point(a)[k], point(b)[k], point(c)[k]});
     hi[k] = std::max({point(a)[k], point(b)[k], point(c)[k]});
+  }
+  if (face_box_.size() < 6 * (size_t{f} + 1)) face_box_.resize(6 * (size_t{f} + 1));
+  for (int k = 0; k < 3; ++k) {
+    face_box_[6 * size_t{f} + k] = float_below(lo[k]);
+    face_box_[6 * size_t{f} + 3 + k] = float_above(hi[k]);
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
@@ -278,6 +295,8 @@ std::vector<uint32_t> Front::compact() {
   for (uint32_t f = 0; f < alive_.size(); ++f)
     if (new_face[f] != kNoIndex) std::copy_n(&faces_[3 * size_t{f}], 3, &faces[3 * size_t{new_face[f]}]);
   faces_.swap(faces);
+  face_box_.assign(6 * size_t{n}, 0.0f);
+  face_box_.shrink_to_fit();
   alive_.assign(n, 1);
   alive_.shrink_to_fit();
   // The leaf lists again, closed from now on, in face order: a list holds

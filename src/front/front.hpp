@@ -7,7 +7,8 @@
 //    whose half-open box contains each); a vertex is a front vertex while
 //    at least one alive face uses it;
 //  - faces: 3 vertex indices each, counterclockwise seen from the unmeshed
-//    region (normal (b-a)x(c-a) into it), with an alive flag; closed faces
+//    region (normal (b-a)x(c-a) into it), with an alive flag and a float
+//    bounding box rounded outward (for cheap rejections); closed faces
 //    stay as dead entries, new faces are appended;
 //  - a hash from the sorted vertex triple to the alive face with those
 //    vertices (at most one: a face whose reverse is alive closes both), and
@@ -72,6 +73,9 @@ class Front {
   size_t num_alive_faces() const { return alive_count_; }
   bool alive(uint32_t f) const { return alive_[f] != 0; }
   const uint32_t* face(uint32_t f) const { return &faces_[3 * size_t{f}]; }
+  // Bounding box of face slot f in floats rounded outward: lo[3] then
+  // hi[3], a superset of the exact box for cheap rejections.
+  const float* face_box(uint32_t f) const { return &face_box_[6 * size_t{f}]; }
 
   // The alive face with vertices {a, b, c} in any order, or kNoIndex.
   uint32_t find_face(uint32_t a, uint32_t b, uint32_t c) const;
@@ -165,6 +169,7 @@ class Front {
 
   std::vector<uint32_t> faces_;
   std::vector<uint8_t> alive_;
+  std::vector<float> face_box_;  // 6 per face slot, see face_box
   std::vector<uint32_t> face_first_entry_;  // chain of the face's entries via entry_chain_
   size_t alive_count_ = 0;
 

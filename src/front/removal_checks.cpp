@@ -34,6 +34,13 @@ Box box_of(const double* const* p, int n) {
   return b;
 }
 
+// Box x meets the float box fb (lo[3], hi[3]; see Front::face_box).
+bool meets_float_box(const Box& x, const float* fb) {
+  for (int k = 0; k < 3; ++k)
+    if (x.hi[k] < fb[k] || fb[3 + k] < x.lo[k]) return false;
+  return true;
+}
+
 bool point_in_box(const double* p, const Box& b) {
   for (int k = 0; k < 3; ++k)
     if (p[k] < b.lo[k] || b.hi[k] < p[k]) return false;
@@ -167,12 +174,11 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     side_box[k] = box_of(sp, 3);
   }
   for (uint32_t g : near.faces) {
+    const float* face_box = front.face_box(g);
+    if (!meets_float_box(tet_box, face_box)) continue;
     const uint32_t* t = front.face(g);
-    const double* tp[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
-    const Box face_box = box_of(tp, 3);
-    if (!boxes_meet(tet_box, face_box)) continue;
     for (int k = 0; k < 3; ++k) {
-      if (!new_edge[k] || !boxes_meet(edge_box[k], face_box)) continue;
+      if (!new_edge[k] || !meets_float_box(edge_box[k], face_box)) continue;
       if (segment_conflicts(front, p, ends[k], t)) return blocked(why, RemovalVerdict::kEdgeCrossesFace, g, k);
     }
     if (!any_new_side) continue;
