@@ -36,6 +36,9 @@ struct OptimizeOptions {
   bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
   bool multi_face_sweep = true;  // multi-face removals after the passes
   int relaxation_sweeps = 2;     // radius-ratio relaxation sweeps at the end
+  // Rounds on the mesh's worst tet after the passes (flip, insert, smooth
+  // while it is below the target and something changes); 0 for none.
+  int worst_tet_rounds = 64;
 };
 
 struct OptimizeStats {

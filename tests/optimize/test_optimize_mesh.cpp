@@ -84,10 +84,16 @@ TEST_P(OptimizeCorpus, ValidSameBoundaryNoWorse) {
 
   EXPECT_GE(stats.after.min_dihedral_deg, stats.before.min_dihedral_deg);
   EXPECT_LE(stats.after.dihedral_under_10 * stats.before.tets, stats.before.dihedral_under_10 * stats.after.tets);
-  if (c.improves && stats.before.dihedral_under_20 > 0)
+  // The mean radius ratio does not drop, except where a vertex bought a
+  // larger smallest angle (the cube: six tets of 35.3 degrees become twelve
+  // of 45 around a centre vertex, mean radius ratio 0.69 -> 0.64).
+  const bool bought_angle =
+      stats.vertices_inserted > 0 && stats.after.min_dihedral_deg > stats.before.min_dihedral_deg + 1;
+  if (c.improves && stats.before.dihedral_under_20 > 0) {
     EXPECT_GT(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
-  else
+  } else if (!bought_angle) {
     EXPECT_GE(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
+  }
   EXPECT_EQ(stats.after.tets, mesh.num_tets());
   EXPECT_LE(stats.passes, OptimizeOptions{}.passes);
 
@@ -233,6 +239,24 @@ TEST(OptimizeMesh, EdgeSplitsCutTheTetsUnderTenDegrees) {
     EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
     EXPECT_EQ(boundary_faces(with), boundary_faces(unoptimized_mesh)) << name;
   }
+}
+
+// The passes leave the cube's six tets of 35.3 degrees alone (above the
+// insertion bar); the rounds on the worst tet put a vertex inside.
+TEST(OptimizeMesh, WorstTetRoundsLiftTheSmallestAngle) {
+  for (const char* name : {"good/cube.off", "good/cross.off"}) {
+    const TetMesh unoptimized_mesh = unoptimized(name, "");
+    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
+    const OptimizeStats rounds = optimize_mesh(with, OptimizeOptions{});
+    OptimizeOptions no_rounds;
+    no_rounds.worst_tet_rounds = 0;
+    const OptimizeStats base = optimize_mesh(without, no_rounds);
+    EXPECT_GT(rounds.after.min_dihedral_deg, base.after.min_dihedral_deg + 1) << name;
+    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
+    EXPECT_EQ(boundary_faces(with), boundary_faces(unoptimized_mesh)) << name;
+  }
+  TetMesh cube = unoptimized("good/cube.off", "");
+  EXPECT_NEAR(optimize_mesh(cube, OptimizeOptions{}).after.min_dihedral_deg, 45, 0.01);
 }
 
 }  // namespace
