@@ -56,6 +56,12 @@ class TreelessRemover {
   // times its mean edge length (zero when the normals cancel) and returns
   // that mean edge length (the mean of its faces' root-mean-square edges).
   double patch_lift(const std::vector<uint32_t>& patch, double lift[3]) const;
+  // `bounded`: the patch and the alive front faces over the patch's box
+  // swept by `lift` that see the patch's centre (orient3d > 0: the patch
+  // lies on their unmeshed side). False when there are none, or a leaf
+  // there is owned by another rank.
+  bool bounded_by_facing_faces(const std::vector<uint32_t>& patch, const double lift[3],
+                               std::vector<uint32_t>& bounded);
   uint32_t add_vertex(const double* p);
   void drop_vertex();
   // Leaves over the box of the given points; false when one is owned by
@@ -145,6 +151,35 @@ double TreelessRemover::patch_lift(const std::vector<uint32_t>& patch, double li
   const double scale = length > 0 ? kPatchLift * edge / length : 0;
   for (int k = 0; k < 3; ++k) lift[k] = normal[k] * scale;
   return edge;
+}
+
+bool TreelessRemover::bounded_by_facing_faces(const std::vector<uint32_t>& patch, const double lift[3],
+                                              std::vector<uint32_t>& bounded) {
+  double lo[3], hi[3], centre[3] = {0, 0, 0};
+  std::copy_n(front_.point(front_.face(patch[0])[0]), 3, lo);
+  std::copy_n(lo, 3, hi);
+  const double share = 1.0 / (3.0 * static_cast<double>(patch.size()));
+  for (uint32_t f : patch)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double x = front_.point(front_.face(f)[i])[k];
+        lo[k] = std::min({lo[k], x, x + lift[k]});
+        hi[k] = std::max({hi[k], x, x + lift[k]});
+        centre[k] += x * share;
+      }
+  const double* corners[2] = {lo, hi};
+  if (!own_leaves_around(corners, 2)) return false;
+  gather_near_front(front_, leaves_, near_);
+  bounded = patch;
+  std::sort(bounded.begin(), bounded.end());
+  const size_t patch_faces = bounded.size();
+  for (uint32_t f : near_.faces) {
+    const uint32_t* t = front_.face(f);
+    if (!std::binary_search(bounded.begin(), bounded.begin() + static_cast<ptrdiff_t>(patch_faces), f) &&
+        orient3d(front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), centre) > 0)
+      bounded.push_back(f);
+  }
+  return bounded.size() > patch_faces;
 }
 
 uint32_t TreelessRemover::add_vertex(const double* p) {
@@ -308,7 +343,7 @@ size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
   std::vector<std::pair<double, uint32_t>> order;
   for (uint32_t f : faces) order.emplace_back(face_size(f), f);
   std::sort(order.begin(), order.end());
-  std::vector<uint32_t> patch;
+  std::vector<uint32_t> patch, bounded;
   size_t made = 0;
   for (const auto& [size, seed] : order) {
     for (size_t target : kPatchSizes) {
@@ -332,7 +367,14 @@ size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
       const double edge = patch_lift(patch, lift);
       KernelPoint kernel = deepest_kernel_point(front_, patch);
       if (!kernel.found || !(kernel.depth >= kPlainDepth * edge)) kernel = deepest_kernel_point(front_, patch, lift);
-      if (!kernel.found || !sees_all(patch, kernel.point) || cone(patch, kernel.point) == 0) continue;
+      bool coned = kernel.found && sees_all(patch, kernel.point) && cone(patch, kernel.point) > 0;
+      // Else the point kept inside the unmeshed region in front of the
+      // patch: bounded also by the front faces there that face the patch.
+      if (!coned && bounded_by_facing_faces(patch, lift, bounded)) {
+        kernel = deepest_kernel_point(front_, bounded, lift);
+        coned = kernel.found && sees_all(patch, kernel.point) && cone(patch, kernel.point) > 0;
+      }
+      if (!coned) continue;
       ++counts_.partial_cones;
       ++made;
       break;

@@ -42,7 +42,11 @@
 //     is less deep than 0.2 mean edge lengths (kPlainDepth), q is searched
 //     in that box lifted along the patch's area-weighted normal by 0.75
 //     mean edge lengths (kPatchLift), so that it rises above a nearly flat
-//     patch instead of lying almost on it;
+//     patch instead of lying almost on it. When that point makes no cone,
+//     it is searched again with the alive front faces over the swept box
+//     that face the patch (the patch's centre on their unmeshed side)
+//     added to the linear program: the point stays in front of them, in
+//     the unmeshed region, instead of beyond a thin gap;
 //  5. advances: each face still alive, in the same order, gets a tet on a
 //     front vertex near the ideal apex (above the centroid at the height of
 //     the regular tet) or on a new, well spaced vertex there or lower,
