@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "check/quality.hpp"
@@ -26,11 +27,18 @@ double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
 
+// The vertex quadruples of tet slots.
+std::vector<uint32_t> tets_of(const TetTopology& topo, const std::vector<uint32_t>& slots) {
+  std::vector<uint32_t> quads;
+  for (uint32_t t : slots) quads.insert(quads.end(), topo.tet(t), topo.tet(t) + 4);
+  return quads;
+}
+
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
 // With `settled` (p is already a good place, e.g. a kernel's deepest
 // point), a cone no better than the cavity before smoothing is not tried.
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
-                SmoothingScratch& scratch, bool settled = false) {
+                SmoothingScratch& scratch, InsertionRule rule, bool settled = false) {
   std::vector<uint32_t> old_tets, new_tets, created;
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
@@ -80,10 +88,14 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
     new_deficit += std::max(0.0, bar - q);
   }
   // Kept when the worst tet improves and either the shortfall does not grow
-  // or a tet under 10 degrees gives way to tets all above.
+  // or a tet under 10 degrees gives way to tets all above (kShortfall), or
+  // the smallest dihedral angle does not drop and the tets with one under
+  // 10 degrees do not grow in number (kWorstFirst).
   const double ten = quality_of_angle(kSliverAngle);
-  if (new_quality > old_quality && (new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)))
-    return true;
+  const bool pays = rule == InsertionRule::kShortfall
+                        ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
+                        : min_angle_no_worse(topo, old_tets, tets_of(topo, created));
+  if (new_quality > old_quality && pays) return true;
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);
   topo.remove_last_vertex();
@@ -112,9 +124,26 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
 
 }  // namespace
 
+AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets) {
+  const double sliver = kSliverAngle * std::numbers::pi / 180;
+  AngleSummary out;
+  for (size_t i = 0; i < tets.size(); i += 4) {
+    const uint32_t* v = &tets[i];
+    const double a = tet_shape(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3])).min_dihedral_rad;
+    out.smallest = std::min(out.smallest, a);
+    out.slivers += a < sliver;
+  }
+  return out;
+}
+
+bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_tets,
+                        std::span<const uint32_t> new_tets) {
+  return summarize_angles(topo, new_tets).no_worse_than(summarize_angles(topo, old_tets));
+}
+
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
 
-bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch) {
+bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch, InsertionRule rule) {
   const uint32_t* v = topo.tet(t);
   double centroid[3];
   for (int i = 0; i < 3; ++i)
@@ -124,12 +153,12 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
   for (int f = 0; f < 4; ++f)
     if (topo.twin(4 * t + f) != TetTopology::kNone) cavity.push_back(topo.twin(4 * t + f) / 4);
   if (cavity.size() > 1) {
-    if (try_cavity(topo, cavity, centroid, bar, scratch)) return true;
+    if (try_cavity(topo, cavity, centroid, bar, scratch, rule)) return true;
     // The centroid of a flat tet lies near its plane, where the cavity's
     // faces on the far side (e.g. boundary faces) cannot see it: the
     // deepest point of the cavity's kernel can.
     const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
-    if (kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, true)) return true;
+    if (kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true)) return true;
     // An edge split (step 3 of insertion.hpp).
     // (The trials above may have grown the tet array: t's vertices are read again.)
     const uint32_t* u = topo.tet(t);
@@ -140,7 +169,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       const double* a = topo.point(ring.a);
       const double* b = topo.point(ring.b);
       const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-      if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch)) return true;
+      if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule)) return true;
     }
     // The tets around t's vertices: a kernel with room for a good vertex.
     std::vector<uint32_t> wider = cavity, star;
@@ -150,9 +179,9 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
     const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
-    return deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, true);
+    return deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, rule, true);
   }
-  return try_cavity(topo, {t}, centroid, bar, scratch);
+  return try_cavity(topo, {t}, centroid, bar, scratch, rule);
 }
 
 }  // namespace partet

@@ -38,6 +38,8 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <span>
 
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_topology.hpp"
@@ -51,6 +53,25 @@ inline constexpr uint64_t kOptimizerVertexId = (uint64_t{1} << 63) | (uint64_t{1
 double insertion_bar(double target);
 
 // Tries the cavities of tet t in turn; true when a vertex was inserted.
-bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch);
+// When an insertion pays: kShortfall as above; kWorstFirst (for the mesh's
+// worst tet) when the worst tet improves and min_angle_no_worse holds.
+enum class InsertionRule { kShortfall, kWorstFirst };
+
+// The smallest dihedral angle of some tets (radians) and how many have one
+// under 10 degrees. The quality measure also counts angles near 180
+// degrees, so a change it calls better can still lower the smallest angle.
+struct AngleSummary {
+  double smallest = std::numeric_limits<double>::infinity();
+  int slivers = 0;
+  bool no_worse_than(const AngleSummary& old) const { return smallest >= old.smallest && slivers <= old.slivers; }
+};
+// Over tets given as vertex quadruples of `topo`'s points.
+AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets);
+// New tets against old ones: summarize_angles no worse.
+bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_tets,
+                        std::span<const uint32_t> new_tets);
+
+bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch,
+                   InsertionRule rule = InsertionRule::kShortfall);
 
 }  // namespace partet

@@ -65,9 +65,9 @@ void count(const Flip& flip, OptimizeStats& stats) {
   }
 }
 
-// Applies the best improving flip around tet t; the new tets go to `created`.
-bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::vector<uint32_t>& created) {
-  Flip best, candidate;
+// The best improving flip around tet t; false when there is none.
+bool best_flip(const TetTopology& topo, uint32_t t, Flip& best) {
+  Flip candidate;
   bool found = false;
   auto consider = [&](bool valid) {
     if (valid && candidate.new_quality > candidate.old_quality &&
@@ -86,7 +86,13 @@ bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::
     consider(face_flip(topo, 4 * t + f, candidate, &beat));
     if (found) beat = best.new_quality;
   }
-  if (!found) return false;
+  return found;
+}
+
+// Applies the best improving flip around tet t; the new tets go to `created`.
+bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::vector<uint32_t>& created) {
+  Flip best;
+  if (!best_flip(topo, t, best)) return false;
   topo.replace(best.cavity(), best.replacement(), created);
   count(best, stats);
   return true;
@@ -220,7 +226,9 @@ size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratc
 
 // After the passes: the mesh's worst tet, while it is below the target,
 // gets the topology step, then an insertion, then its free vertices
-// smoothed, until none of them changes anything there or after `rounds`
+// smoothed, each kept only when the smallest dihedral angle of the tets it
+// changes does not drop and no more of them have one under 10 degrees
+// (min_angle_no_worse), until none of them changes anything or after `rounds`
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
 // smallest angle could stay where a vertex would lift it: the cube's six
 // tets of 35.3 degrees become twelve of 45 around a centre vertex). The
@@ -228,26 +236,46 @@ size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratc
 size_t worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::vector<uint8_t>& frozen,
                         OptimizeStats& stats, SmoothingScratch& scratch) {
   size_t changes = 0;
-  std::vector<uint32_t> created;
+  std::vector<uint32_t> created, before, star;
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     for (uint32_t t = 0; t < topo.slots(); ++t)
       if (topo.alive(t) && (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst))) worst = t;
     if (worst == TetTopology::kNone || !(topo.quality(worst) < target)) break;
-    created.clear();
-    bool changed = improve_topology(topo, worst, stats, created);
-    if (!changed && insert_vertex(topo, worst, target, scratch)) {
+    bool changed = false;
+    Flip flip;
+    if (best_flip(topo, worst, flip)) {
+      before.clear();
+      for (uint32_t t : flip.cavity()) before.insert(before.end(), topo.tet(t), topo.tet(t) + 4);
+      if (min_angle_no_worse(topo, before, flip.replacement())) {
+        created.clear();
+        topo.replace(flip.cavity(), flip.replacement(), created);
+        count(flip, stats);
+        changed = true;
+      }
+    }
+    if (!changed && insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst)) {
       ++stats.vertices_inserted;
       changed = true;
     }
     if (!changed) {
       uint32_t corners[4];
       std::copy_n(topo.tet(worst), 4, corners);
-      for (uint32_t v : corners)
-        if ((v >= frozen.size() || !frozen[v]) && smooth_vertex(topo, v, scratch)) {
+      for (uint32_t v : corners) {
+        if (v < frozen.size() && frozen[v]) continue;
+        const double old_position[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
+        topo.vertex_star(v, scratch.star);
+        star.clear();
+        for (uint32_t t : scratch.star) star.insert(star.end(), topo.tet(t), topo.tet(t) + 4);
+        const AngleSummary old_angles = summarize_angles(topo, star);
+        if (!smooth_vertex(topo, v, scratch)) continue;
+        if (summarize_angles(topo, star).no_worse_than(old_angles)) {
           ++stats.vertices_moved;
           changed = true;
+        } else {
+          topo.move_vertex(v, old_position);
         }
+      }
     }
     if (!changed) break;
     ++changes;

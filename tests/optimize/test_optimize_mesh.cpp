@@ -257,6 +257,19 @@ TEST(OptimizeMesh, WorstTetRoundsLiftTheSmallestAngle) {
   }
   TetMesh cube = unoptimized("good/cube.off", "");
   EXPECT_NEAR(optimize_mesh(cube, OptimizeOptions{}).after.min_dihedral_deg, 45, 0.01);
+  // Where the worst tets are forced by the surface, the rounds must not
+  // trade a wide angle for a smaller smallest one.
+  for (const char* name : {"good/part.off", "good/joint.off", "good/pipe.off", "good/dragknob.off"}) {
+    const TetMesh unoptimized_mesh = unoptimized(name, "");
+    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
+    const OptimizeStats rounds = optimize_mesh(with, OptimizeOptions{});
+    OptimizeOptions no_rounds;
+    no_rounds.worst_tet_rounds = 0;
+    const OptimizeStats base = optimize_mesh(without, no_rounds);
+    EXPECT_GE(rounds.after.min_dihedral_deg, base.after.min_dihedral_deg) << name;
+    EXPECT_LE(rounds.after.dihedral_under_10 * base.after.tets, base.after.dihedral_under_10 * rounds.after.tets) << name;
+    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
+  }
 }
 
 }  // namespace
