@@ -217,6 +217,25 @@ TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
   EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --optimize -1").exit_code, 2);
 }
 
+// The unoptimized mesh of `name` optimized with the default options (`with`,
+// stats `on`) and with `disable` applied to them (stats `off`).
+struct Comparison {
+  TetMesh original, with;
+  OptimizeStats on, off;
+};
+
+template <class Disable>
+Comparison compare_options(const char* name, Disable disable) {
+  Comparison c;
+  c.original = unoptimized(name, "");
+  c.with = c.original;
+  TetMesh without = c.original;
+  c.on = optimize_mesh(c.with, OptimizeOptions{});
+  OptimizeOptions options;
+  disable(options);
+  c.off = optimize_mesh(without, options);
+  return c;
+}
 
 // The edge splits of the insertion step (insertion.hpp, step 3) make most
 // of its vertices: on these CAD parts, whose thin walls leave many bad tets
@@ -226,49 +245,34 @@ TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
 // stays at 33.9 %).
 TEST(OptimizeMesh, EdgeSplitsCutTheTetsUnderTenDegrees) {
   for (const char* name : {"good/u.off", "good/part.off"}) {
-    const TetMesh unoptimized_mesh = unoptimized(name, "");
-    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
-    const OptimizeStats inserted = optimize_mesh(with, OptimizeOptions{});
-    OptimizeOptions no_insertion;
-    no_insertion.insert_vertices = false;
-    const OptimizeStats base = optimize_mesh(without, no_insertion);
-    const double share = static_cast<double>(inserted.after.dihedral_under_10) / inserted.after.tets;
-    const double base_share = static_cast<double>(base.after.dihedral_under_10) / base.after.tets;
+    const Comparison c = compare_options(name, [](OptimizeOptions& o) { o.insert_vertices = false; });
+    const double share = static_cast<double>(c.on.after.dihedral_under_10) / c.on.after.tets;
+    const double base_share = static_cast<double>(c.off.after.dihedral_under_10) / c.off.after.tets;
     EXPECT_LT(share, base_share / 3) << name << ": " << share << " against " << base_share;
-    EXPECT_GE(inserted.after.min_dihedral_deg, inserted.before.min_dihedral_deg) << name;
-    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
-    EXPECT_EQ(boundary_faces(with), boundary_faces(unoptimized_mesh)) << name;
+    EXPECT_GE(c.on.after.min_dihedral_deg, c.on.before.min_dihedral_deg) << name;
+    EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
+    EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original)) << name;
   }
 }
 
 // The passes leave the cube's six tets of 35.3 degrees alone (above the
 // insertion bar); the rounds on the worst tet put a vertex inside.
 TEST(OptimizeMesh, WorstTetRoundsLiftTheSmallestAngle) {
+  const auto no_rounds = [](OptimizeOptions& o) { o.worst_tet_rounds = 0; };
   for (const char* name : {"good/cube.off", "good/cross.off"}) {
-    const TetMesh unoptimized_mesh = unoptimized(name, "");
-    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
-    const OptimizeStats rounds = optimize_mesh(with, OptimizeOptions{});
-    OptimizeOptions no_rounds;
-    no_rounds.worst_tet_rounds = 0;
-    const OptimizeStats base = optimize_mesh(without, no_rounds);
-    EXPECT_GT(rounds.after.min_dihedral_deg, base.after.min_dihedral_deg + 1) << name;
-    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
-    EXPECT_EQ(boundary_faces(with), boundary_faces(unoptimized_mesh)) << name;
+    const Comparison c = compare_options(name, no_rounds);
+    EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 1) << name;
+    EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
+    EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original)) << name;
   }
-  TetMesh cube = unoptimized("good/cube.off", "");
-  EXPECT_NEAR(optimize_mesh(cube, OptimizeOptions{}).after.min_dihedral_deg, 45, 0.01);
+  EXPECT_NEAR(compare_options("good/cube.off", no_rounds).on.after.min_dihedral_deg, 45, 0.01);
   // Where the worst tets are forced by the surface, the rounds must not
   // trade a wide angle for a smaller smallest one.
   for (const char* name : {"good/part.off", "good/joint.off", "good/pipe.off", "good/dragknob.off"}) {
-    const TetMesh unoptimized_mesh = unoptimized(name, "");
-    TetMesh with = unoptimized_mesh, without = unoptimized_mesh;
-    const OptimizeStats rounds = optimize_mesh(with, OptimizeOptions{});
-    OptimizeOptions no_rounds;
-    no_rounds.worst_tet_rounds = 0;
-    const OptimizeStats base = optimize_mesh(without, no_rounds);
-    EXPECT_GE(rounds.after.min_dihedral_deg, base.after.min_dihedral_deg) << name;
-    EXPECT_LE(rounds.after.dihedral_under_10 * base.after.tets, base.after.dihedral_under_10 * rounds.after.tets) << name;
-    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << name;
+    const Comparison c = compare_options(name, no_rounds);
+    EXPECT_GE(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
+    EXPECT_LE(c.on.after.dihedral_under_10 * c.off.after.tets, c.off.after.dihedral_under_10 * c.on.after.tets) << name;
+    EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
   }
 }
 
