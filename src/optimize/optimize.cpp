@@ -231,11 +231,9 @@ size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratc
 // (min_angle_no_worse), until none of them changes anything or after `rounds`
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
 // smallest angle could stay where a vertex would lift it: the cube's six
-// tets of 35.3 degrees become twelve of 45 around a centre vertex). The
-// number of changes.
-size_t worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::vector<uint8_t>& frozen,
-                        OptimizeStats& stats, SmoothingScratch& scratch) {
-  size_t changes = 0;
+// tets of 35.3 degrees become twelve of 45 around a centre vertex).
+void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::vector<uint8_t>& frozen,
+                      OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star;
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
@@ -278,9 +276,7 @@ size_t worst_tet_rounds(TetTopology& topo, double target, int rounds, const std:
       }
     }
     if (!changed) break;
-    ++changes;
   }
-  return changes;
 }
 
 // Step 3 of a pass; the number of vertices moved.
