@@ -27,11 +27,12 @@ double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
 
-// The vertex quadruples of tet slots.
-std::vector<uint32_t> tets_of(const TetTopology& topo, const std::vector<uint32_t>& slots) {
+// min_angle_no_worse for the tets in slots `created` against `old_tets`.
+bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& old_tets,
+                         const std::vector<uint32_t>& created) {
   std::vector<uint32_t> quads;
-  for (uint32_t t : slots) quads.insert(quads.end(), topo.tet(t), topo.tet(t) + 4);
-  return quads;
+  topo.tet_vertices(created, quads);
+  return min_angle_no_worse(topo, old_tets, quads);
 }
 
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
@@ -94,7 +95,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   const double ten = quality_of_angle(kSliverAngle);
   const bool pays = rule == InsertionRule::kShortfall
                         ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
-                        : min_angle_no_worse(topo, old_tets, tets_of(topo, created));
+                        : new_angles_no_worse(topo, old_tets, created);
   if (new_quality > old_quality && pays) return true;
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);

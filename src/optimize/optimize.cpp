@@ -243,8 +243,7 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
     bool changed = false;
     Flip flip;
     if (best_flip(topo, worst, flip)) {
-      before.clear();
-      for (uint32_t t : flip.cavity()) before.insert(before.end(), topo.tet(t), topo.tet(t) + 4);
+      topo.tet_vertices(flip.cavity(), before);
       if (min_angle_no_worse(topo, before, flip.replacement())) {
         created.clear();
         topo.replace(flip.cavity(), flip.replacement(), created);
@@ -263,8 +262,7 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
         if (v < frozen.size() && frozen[v]) continue;
         const double old_position[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
         topo.vertex_star(v, scratch.star);
-        star.clear();
-        for (uint32_t t : scratch.star) star.insert(star.end(), topo.tet(t), topo.tet(t) + 4);
+        topo.tet_vertices(scratch.star, star);
         const AngleSummary old_angles = summarize_angles(topo, star);
         if (!smooth_vertex(topo, v, scratch)) continue;
         if (summarize_angles(topo, star).no_worse_than(old_angles)) {

@@ -79,6 +79,11 @@ class TetTopology {
   // The tets having vertex v, appended to `star` (cleared first) in a
   // deterministic breadth-first order from v's incident tet.
   void vertex_star(uint32_t v, std::vector<uint32_t>& star) const;
+  // The vertex quadruples of the tets in `slots`, in order (cleared first).
+  void tet_vertices(std::span<const uint32_t> slots, std::vector<uint32_t>& quads) const {
+    quads.clear();
+    for (uint32_t t : slots) quads.insert(quads.end(), tet(t), tet(t) + 4);
+  }
 
   // Writes the alive tets back to the mesh's tet array, in slot order.
   void compact();
