@@ -23,6 +23,14 @@ constexpr double kShortfallAngle = 20;
 // one by tets all above it pays even when the shortfall grows.
 constexpr double kSliverAngle = 10;
 
+// `items` sorted, duplicates dropped: membership by binary search (a
+// cavity around a tet's four vertices has about 70 tets).
+std::vector<uint32_t> sorted_copy(std::vector<uint32_t> items) {
+  std::sort(items.begin(), items.end());
+  items.erase(std::unique(items.begin(), items.end()), items.end());
+  return items;
+}
+
 double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
@@ -41,6 +49,7 @@ bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& o
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
                 SmoothingScratch& scratch, InsertionRule rule, bool settled = false) {
   std::vector<uint32_t> old_tets, new_tets, created;
+  const std::vector<uint32_t> members = sorted_copy(cavity);
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
   for (uint32_t t : cavity) {
@@ -54,7 +63,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   for (uint32_t t : cavity) {
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = topo.twin(4 * t + f);
-      if (other != TetTopology::kNone && std::find(cavity.begin(), cavity.end(), other / 4) != cavity.end()) continue;
+      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
       uint32_t tet[4];
       std::copy_n(topo.tet(t), 4, tet);
       tet[f] = v;
@@ -66,8 +75,9 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
     }
   }
   // A vertex inside the cavity (on no outer face) would vanish: not here.
+  const std::vector<uint32_t> kept = sorted_copy(new_tets);
   for (uint32_t u : old_tets) {
-    if (std::find(new_tets.begin(), new_tets.end(), u) == new_tets.end()) {
+    if (!std::binary_search(kept.begin(), kept.end(), u)) {
       topo.remove_last_vertex();
       return false;
     }
@@ -109,10 +119,11 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
 // permutation.
 std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint32_t>& cavity) {
   std::vector<double> faces;
+  const std::vector<uint32_t> members = sorted_copy(cavity);
   for (uint32_t t : cavity)
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = topo.twin(4 * t + f);
-      if (other != TetTopology::kNone && std::find(cavity.begin(), cavity.end(), other / 4) != cavity.end()) continue;
+      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
       uint32_t tri[3];
       int n = 0;
       for (int k = 0; k < 4; ++k)
@@ -121,6 +132,16 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
       for (uint32_t v : tri) faces.insert(faces.end(), topo.point(v), topo.point(v) + 3);
     }
   return faces;
+}
+
+// Some tet of `star` (v's star) has a face through v with no tet behind it.
+bool on_open_face(const TetTopology& topo, uint32_t v, const std::vector<uint32_t>& star) {
+  for (uint32_t s : star) {
+    const int lv = local_index(topo.tet(s), v);
+    for (int f = 0; f < 4; ++f)
+      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -173,9 +194,13 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule)) return true;
     }
     // The tets around t's vertices: a kernel with room for a good vertex.
+    // A vertex of t off the boundary has its whole star in that cavity, on
+    // none of its outer faces: it would vanish, and the cavity is not used.
     std::vector<uint32_t> wider = cavity, star;
     for (int k = 0; k < 4; ++k) {
-      topo.vertex_star(topo.tet(t)[k], star);
+      const uint32_t corner = topo.tet(t)[k];
+      topo.vertex_star(corner, star);
+      if (!on_open_face(topo, corner, star)) return false;
       for (uint32_t s : star)
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
