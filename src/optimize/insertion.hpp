@@ -13,7 +13,10 @@
 //  4. the tets around the tet's four vertices, the vertex at the deepest
 //     point of their kernel: what a flat tet on four surface vertices (over
 //     two nearly coplanar surface triangles) needs, whose centroid lies on
-//     the surface and whose neighbours leave little room;
+//     the surface and whose neighbours leave little room (tried only when
+//     the four vertices are on the boundary: an interior one would lie
+//     inside this cavity and vanish; the check halved handle's insertion
+//     time);
 //  5. only for a tet with no neighbour: the tet alone, the vertex at its
 //     centroid (as a fallback after 1-4 it succeeded on no corpus input
 //     but lever, and its trials cost 5 % of the optimizer's time).
