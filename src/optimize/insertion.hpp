@@ -15,8 +15,8 @@
 //     two nearly coplanar surface triangles) needs, whose centroid lies on
 //     the surface and whose neighbours leave little room (tried only when
 //     the four vertices are on the boundary: an interior one would lie
-//     inside this cavity and vanish; the check halved handle's insertion
-//     time);
+//     inside this cavity and vanish; the check cut handle's insertion
+//     time by a third);
 //  5. only for a tet with no neighbour: the tet alone, the vertex at its
 //     centroid (as a fallback after 1-4 it succeeded on no corpus input
 //     but lever, and its trials cost 5 % of the optimizer's time).
