@@ -48,6 +48,11 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_option("--too-close", o.too_close,
                  "Gap kept between the surface and the templated core, in target sizes")
       ->type_name("T")->capture_default_str();
+  app.add_option("--min-core", o.min_core,
+                 "When the templated core fills less than this share of the volume (thin or coarsely "
+                 "triangulated bodies), every target size is scaled by 0.7, at most twice, until it fills "
+                 "more; 0 turns this off")
+      ->type_name("C")->capture_default_str();
   std::string partitioner = "mrob";
   app.add_option("--partitioner", partitioner,
                  "How the boundary octants are split between ranks: recursive bisection along the coordinate "

@@ -66,6 +66,7 @@ ojson options_json(const MeshOptions& o) {
   j["size_factor"] = o.size_factor;
   j["max_level"] = o.max_level;
   j["too_close"] = o.too_close;
+  j["min_core"] = o.min_core;
   j["partitioner"] = bisection_name(o.partitioner);
   j["ascii"] = o.ascii;
   if (!o.front_out.empty()) j["front_out"] = o.front_out;
@@ -181,6 +182,7 @@ void check_options(const MeshOptions& o) {
     throw InputError("--max-level must be between 1 and " + std::to_string(kMaxLevel) + " (got " +
                      std::to_string(o.max_level) + ")");
   if (!(o.too_close >= 0)) throw InputError("--too-close must be zero or positive");
+  if (!(o.min_core >= 0 && o.min_core <= 1)) throw InputError("--min-core must be between 0 and 1");
 }
 
 // The root cube and the level of every surface vertex (same on every rank).
@@ -278,6 +280,73 @@ ojson classify(MeshState& s, const MeshOptions& o, const Comm& comm) {
   return c;
 }
 
+// The share of the volume inside the surface that the interior leaves
+// fill (before the manifold repair demotes a few), over all ranks.
+double core_fraction(const MeshState& s, const Comm& comm) {
+  const LinearOctree& tree = comm.size() > 1 ? s.own.leaves : s.tree;
+  double inside = 0;
+  for (size_t i = 0; i < tree.size(); ++i) {
+    if (tree.cls[i] != LeafClass::kInterior) continue;
+    const double h = octant_edge(tree.level[i]) * s.root.unit;
+    inside += h * h * h;
+  }
+  inside = comm.sum(inside);
+  const double volume = comm.max(comm.rank() == 0 ? s.summary.volume : 0.0);
+  return volume > 0 ? inside / volume : 1;
+}
+
+// Each attempt of refine_thin_core scales the sizes by this factor.
+constexpr double kThinCoreScale = 0.7;
+constexpr int kThinCoreAttempts = 2;
+
+// When the core fills less than o.min_core of the volume, the front fills
+// the rest from the surface vertices alone: on a thin or coarsely
+// triangulated body (no leaf far enough from the surface) it makes long
+// tets across the body that the optimizer cannot mend. The tree is then
+// built and classified again with every target size scaled by
+// kThinCoreScale, up to kThinCoreAttempts times, stopping at the first
+// attempt whose core reaches o.min_core; the attempt with the largest core
+// is kept (the coarsest among equals), so a body whose core stays empty
+// (CAD parts whose sizes come from slivers) keeps its first tree.
+ojson refine_thin_core(MeshState& s, const MeshOptions& o, const Comm& comm) {
+  const bool distributed = comm.size() > 1;
+  double best = core_fraction(s, comm), factor = o.size_factor, best_factor = factor;
+  ojson c;
+  c["core fraction before"] = best;
+  struct Tree {
+    VertexSizing sizing;
+    LinearOctree tree;
+    DistributedOctree own;
+  } kept;
+  bool current_is_best = true;
+  for (int attempt = 0; attempt < kThinCoreAttempts && best < o.min_core; ++attempt) {
+    if (current_is_best) kept = {std::move(s.sizing), std::move(s.tree), std::move(s.own)};
+    MeshOptions finer = o;
+    factor *= kThinCoreScale;
+    finer.size_factor = factor;
+    if (distributed) {
+      build_tree_distributed(s, finer, comm);
+    } else {
+      build_tree(s, finer);
+    }
+    classify(s, finer, comm);
+    const double fraction = core_fraction(s, comm);
+    current_is_best = fraction > best;
+    if (current_is_best) {
+      best = fraction;
+      best_factor = factor;
+    }
+  }
+  if (!current_is_best) {
+    s.sizing = std::move(kept.sizing);
+    s.tree = std::move(kept.tree);
+    s.own = std::move(kept.own);
+  }
+  c["core fraction"] = best;
+  c["size factor"] = best_factor;
+  return c;
+}
+
 }  // namespace
 
 int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
@@ -331,6 +400,11 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     report.run_step("classify leaves", [&] {
       return distributed || root_rank ? classify(s, options, comm) : ojson::object();
     });
+    if (options.min_core > 0) {
+      report.run_step("refine thin core", [&] {
+        return distributed || root_rank ? refine_thin_core(s, options, comm) : ojson::object();
+      });
+    }
     report.run_step("manifold core", [&] {
       if (!distributed && !root_rank) return ojson::object();
       GhostCounts ghosts;

@@ -22,6 +22,9 @@ struct MeshOptions {
   double size_factor = 1;                                     // --size-factor F
   int max_level = 20;                                         // --max-level L
   double too_close = 0.5;                                     // --too-close T
+  // --min-core C: when the templated core fills less than this share of the
+  // volume, the sizes are refined (see refine_thin_core); 0 turns it off.
+  double min_core = 0.1;
   BisectionMethod partitioner = BisectionMethod::kMrob;       // --partitioner rob|rib|mrob: boundary leaves (P > 1)
   int optimize_passes = 3;     // --optimize N: quality optimization passes (0, or --no-optimize: none)
   double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone

@@ -108,7 +108,7 @@ TEST(Cli, BadOptionValuesAreInputErrors) {
   std::string in = data_path("good/cube.off") + " -o /tmp/partet_never.vtu ";
   for (const char* bad : {"--size-factor 0", "--size-factor -1", "--max-size 0", "--max-level 0",
                           "--max-level 21", "--too-close -1", "--stop-after nothing", "--front-out f.xyz",
-                          "--partitioner metis"}) {
+                          "--partitioner metis", "--min-core -0.1", "--min-core 2"}) {
     auto r = run_partet(in + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.output;
   }
@@ -176,6 +176,53 @@ TEST(Cli, ReportHasStepsTimesPerRankAndMemory) {
   EXPECT_GT(j["steps"][1]["counts"]["triangles"].get<int>(), 0);
   EXPECT_EQ(j["surface"]["shells"], 1);
   EXPECT_GT(j["peak_rss_mib"][0].get<double>(), 0.0);
+}
+
+// The step `name` of a report, or null.
+nlohmann::json report_step(const nlohmann::json& report, const std::string& name) {
+  for (const auto& step : report["steps"])
+    if (step["name"] == name) return step;
+  return nullptr;
+}
+
+TEST(Cli, ThinBodyGetsAFinerCore) {
+  // The ellipsoid's 320 triangles leave no leaf far enough from the surface
+  // for a core: its sizes are refined once, and the tets across the body
+  // give way to a core and much better angles.
+  std::string dir = scratch_dir("cli_thin");
+  const std::string in = data_path("good/ellipsoid.off");
+  auto r = run_partet(in + " -o " + dir + "/e.vtu --quiet --report " + dir + "/e.json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(run_partet("check " + dir + "/e.vtu --surface " + in).exit_code, 0);
+  auto off = run_partet(in + " -o " + dir + "/o.vtu --quiet --min-core 0 --report " + dir + "/o.json");
+  ASSERT_EQ(off.exit_code, 0) << off.output;
+  const auto j = nlohmann::json::parse(test::read_text(dir + "/e.json"));
+  const auto o = nlohmann::json::parse(test::read_text(dir + "/o.json"));
+  const auto thin = report_step(j, "refine thin core");
+  ASSERT_FALSE(thin.is_null());
+  EXPECT_LT(thin["counts"]["core fraction before"].get<double>(), 0.1);
+  EXPECT_GE(thin["counts"]["core fraction"].get<double>(), 0.1);
+  EXPECT_DOUBLE_EQ(thin["counts"]["size factor"].get<double>(), 0.7);
+  EXPECT_TRUE(report_step(o, "refine thin core").is_null());
+  EXPECT_GT(report_step(j, "template interior")["counts"]["leaves"].get<int>(), 0);
+  EXPECT_EQ(report_step(o, "template interior")["counts"]["leaves"].get<int>(), 0);
+  const double angle = report_step(j, "optimize")["counts"]["min dihedral after"].get<double>();
+  const double plain = report_step(o, "optimize")["counts"]["min dihedral after"].get<double>();
+  EXPECT_GT(angle, plain + 5) << angle << " vs " << plain;
+}
+
+TEST(Cli, ACoreThatStaysEmptyKeepsTheFirstTree) {
+  // joint.off's sizes come from slivers: no core at any size tried, so the
+  // mesh is the one without the refinement.
+  std::string dir = scratch_dir("cli_thin_empty");
+  const std::string in = data_path("good/joint.off");
+  ASSERT_EQ(run_partet(in + " -o " + dir + "/a.vtu --quiet --report " + dir + "/a.json").exit_code, 0);
+  ASSERT_EQ(run_partet(in + " -o " + dir + "/b.vtu --quiet --min-core 0").exit_code, 0);
+  const auto thin = report_step(nlohmann::json::parse(test::read_text(dir + "/a.json")), "refine thin core");
+  ASSERT_FALSE(thin.is_null());
+  EXPECT_EQ(thin["counts"]["core fraction"].get<double>(), 0.0);
+  EXPECT_EQ(thin["counts"]["size factor"].get<double>(), 1.0);
+  EXPECT_EQ(test::read_text(dir + "/a.vtu"), test::read_text(dir + "/b.vtu"));
 }
 
 TEST(Cli, CheckValidInvalidAndUnreadable) {
