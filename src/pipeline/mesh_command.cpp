@@ -104,6 +104,7 @@ struct MeshState {
   VertexLinks links;  // copies of this rank's template vertices on other ranks
   BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
   bool whole_on_root = false;
+  bool thin_core_refined = false;  // refine_thin_core changed the sizes
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
 };
@@ -342,17 +343,21 @@ ojson refine_thin_core(MeshState& s, const MeshOptions& o, const Comm& comm) {
     s.tree = std::move(kept.tree);
     s.own = std::move(kept.own);
   }
+  s.thin_core_refined = best_factor != o.size_factor;
   c["core fraction"] = best;
   c["size factor"] = best_factor;
   return c;
 }
 
-}  // namespace
+// Thrown on every rank when the front did not close on a tree that
+// refine_thin_core refined: run_mesh meshes again without the refinement.
+struct ThinCoreRetry {};
 
-int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
+int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool retried) {
   RunReport report(comm, log);
   report.set("input", options.input);
   report.set("options", options_json(options));
+  if (retried) report.set("retried without the thin-core refinement", true);
   int code = kExitOk;
   std::string message;
   MeshState s;
@@ -537,6 +542,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
       }
       if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
+      if (faces_left > 0 && s.thin_core_refined) throw ThinCoreRetry{};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
@@ -617,6 +623,23 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   if (!options.report.empty()) collective_step(comm, [&] { report.write(options.report); });
   if (code != kExitOk) throw Error(code, message);
   return code;
+}
+
+}  // namespace
+
+// Closure comes first: the thin-core refinement is for quality, and the
+// first tree is what meshed before it, so a front that does not close on
+// the refined tree is meshed again on the first one.
+int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
+  try {
+    return mesh_once(options, comm, log, false);
+  } catch (const ThinCoreRetry&) {
+    log.note(file_basename(options.input) +
+             ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
+    MeshOptions first = options;
+    first.min_core = 0;
+    return mesh_once(first, comm, log, true);
+  }
 }
 
 }  // namespace partet

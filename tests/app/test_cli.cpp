@@ -211,6 +211,24 @@ TEST(Cli, ThinBodyGetsAFinerCore) {
   EXPECT_GT(angle, plain + 5) << angle << " vs " << plain;
 }
 
+TEST(Cli, AFrontThatDoesNotCloseOnTheRefinedTreeIsMeshedOnTheFirst) {
+  // Without the tree-less removals the ellipsoid's front stays open on
+  // either tree: the refined attempt gives way to one on the first tree,
+  // which reports the faces left and writes its partial mesh.
+  std::string dir = scratch_dir("cli_thin_retry");
+  const std::string in = data_path("good/ellipsoid.off");
+  auto r = run_partet(in + " -o " + dir + "/e.vtu --no-treeless --keep-partial --report " + dir + "/e.json");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_TRUE(contains(r.output, "meshing again on the first tree")) << r.output;
+  EXPECT_TRUE(contains(r.output, "front faces remain")) << r.output;
+  const auto j = nlohmann::json::parse(test::read_text(dir + "/e.json"));
+  EXPECT_EQ(j["retried without the thin-core refinement"], true);
+  EXPECT_EQ(j["options"]["min_core"].get<double>(), 0.0);
+  EXPECT_TRUE(report_step(j, "refine thin core").is_null());
+  EXPECT_TRUE(std::filesystem::exists(dir + "/e.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/e.front.off"));
+}
+
 TEST(Cli, ACoreThatStaysEmptyKeepsTheFirstTree) {
   // joint.off's sizes come from slivers: no core at any size tried, so the
   // mesh is the one without the refinement.
