@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan fuzz bench-steps bench bench-large corpus-check clean
+.PHONY: all deps build demo test test-asan fuzz bench-steps bench bench-large corpus-check stress-check clean
 
 all: build
 
@@ -40,6 +40,9 @@ bench-large: build
 
 corpus-check: build
 	@scripts/corpus-check $(BUILD) $(or $(ROUNDS),3)
+
+stress-check: build
+	@scripts/stress-check $(BUILD) $(or $(COUNT),200) $(or $(SEED),1)
 
 fuzz:
 	@PARTET_FUZZ_DEPS=1 scripts/install-deps
