@@ -63,6 +63,24 @@
 // surface vertices are kSurfaceVertexId | s with s < 2^32 (bit 62 clear),
 // so the three id spaces are disjoint.
 //
+// Rescue: the rounds are chaotic (a change to how a cavity is treated
+// closes one input and stalls another), so other strategies run only where
+// the default fails. When the default ends with faces left (stalled, a
+// budget spent, or a round that changes nothing), the front, `out`, the
+// tree's leaf classes and `memo` are restored to what they were at the
+// call's start and the rounds run again with the next TreelessStrategy
+// (options.rescue, default true; false: the default only):
+//  - kUndoOvergrowth: a growth step (step 2) that takes the component
+//    beyond kMaxGrownFaces is undone (its tets are made again, newest
+//    first, from a face each deletion opened; kept when one of them had all
+//    four faces on the front) and the component is left for this round,
+//    instead of kept for the tree pass to rebuild every round;
+//  - kConeFirst: as kUndoOvergrowth, and a component with no star point is
+//    first split by a partial cone (step 3), before any growth.
+// The first strategy that closes the front wins. When none does, the state
+// of the attempt that left the fewest faces (the earliest on ties) is
+// kept. Inputs the default closes are unchanged: the rescues never run.
+//
 // Termination: each round either changes the mesh, spending budget (a new
 // vertex or a deletion) or making tets by tree-supported removal, which
 // terminates (face_removal.hpp); a round that changes nothing ends the
@@ -82,6 +100,17 @@ namespace partet {
 
 constexpr uint64_t kSteinerVertexId = kSurfaceVertexId | (uint64_t{1} << 62);
 
+// How the rounds treat a cavity that is not star-shaped (steps 2 and 3
+// above), in the order a call tries them.
+enum class TreelessStrategy : uint8_t {
+  kDefault,         // a growth step past kMaxGrownFaces is kept
+  kUndoOvergrowth,  // a growth step past kMaxGrownFaces is undone
+  kConeFirst,       // as kUndoOvergrowth, and a partial cone before the first growth
+};
+constexpr TreelessStrategy kTreelessStrategies[] = {TreelessStrategy::kDefault, TreelessStrategy::kUndoOvergrowth,
+                                                    TreelessStrategy::kConeFirst};
+const char* strategy_name(TreelessStrategy strategy);
+
 struct TreelessCounts {
   size_t tree_tets = 0;        // made by the tree-supported runs inside
   size_t new_vertex_tets = 0;  // made on new vertices
@@ -95,6 +124,8 @@ struct TreelessCounts {
   size_t faces_left = 0;
   size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
   bool stalled = false;        // ended by stall_rounds rounds without a smaller front
+  TreelessStrategy strategy = TreelessStrategy::kDefault;  // of the attempt these counts are from
+  size_t attempts = 1;         // strategies tried
 };
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`

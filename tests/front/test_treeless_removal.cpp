@@ -125,11 +125,13 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
 }
 
 // pipe refined once: its front does not shrink in the first round (it
-// closes after about 50). With stall_rounds 1 the call stops there,
-// stalled, and leaves a valid partial mesh; sphere966 closes unstalled.
+// closes after about 50). With stall_rounds 1 and no rescue the call stops
+// there, stalled, and leaves a valid partial mesh; sphere966 closes
+// unstalled.
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
+  impatient.rescue = false;
   const Meshed stopped =
       mesh_surface(refine_midpoints(read_surface_file(data_path("good/pipe.off"))), "good/pipe.off r1", impatient);
   EXPECT_TRUE(stopped.counts.stalled);
