@@ -29,6 +29,7 @@ double squared_distance(const double* x, const double* y) {
 }
 
 constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown) as one cavity
+constexpr size_t kMaxSmallCavityFaces = 64;  // the same, with TreelessStrategy::kSmallCavities
 constexpr int kMaxGrowth = 8;
 constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
 constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
@@ -354,10 +355,12 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
     faces = component_of(seed, kMaxGrownFaces + 1);
     if (faces.size() > kMaxGrownFaces) {
       // Grown into a component too large for one cavity: it is left for
-      // this round. Except with kDefault, the step's deletions are undone
-      // (kept, the tree pass would rebuild the same tets and the next round
-      // would grow the same way again).
-      if (strategy_ != TreelessStrategy::kDefault && restorable_) restore_reopened();
+      // this round. With kUndoOvergrowth and kConeFirst the step's
+      // deletions are undone (kept, the tree pass would rebuild the same
+      // tets and the next round would grow the same way again).
+      const bool undo =
+          strategy_ == TreelessStrategy::kUndoOvergrowth || strategy_ == TreelessStrategy::kConeFirst;
+      if (undo && restorable_) restore_reopened();
       return false;
     }
   }
@@ -567,6 +570,7 @@ TreelessCounts TreelessRemover::run() {
   vertex_budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
   deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
+  const size_t max_cavity = strategy_ == TreelessStrategy::kSmallCavities ? kMaxSmallCavityFaces : kMaxCavityFaces;
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;
   bool changed = front_.num_alive_faces() > 0;
@@ -581,7 +585,7 @@ TreelessCounts TreelessRemover::run() {
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {
       const auto first = components_.begin() + static_cast<ptrdiff_t>(component_first_[i]);
       const auto last = components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]);
-      if (last - first <= static_cast<ptrdiff_t>(kMaxCavityFaces))
+      if (last - first <= static_cast<ptrdiff_t>(max_cavity))
         cavities.emplace_back(first, last);
       else
         stuck.insert(stuck.end(), first, last);
@@ -646,6 +650,7 @@ const char* strategy_name(TreelessStrategy strategy) {
     case TreelessStrategy::kDefault: return "default";
     case TreelessStrategy::kUndoOvergrowth: return "undo overgrowth";
     case TreelessStrategy::kConeFirst: return "cone first";
+    case TreelessStrategy::kSmallCavities: return "small cavities";
   }
   return "?";
 }

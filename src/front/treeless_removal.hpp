@@ -76,7 +76,13 @@
 //    four faces on the front) and the component is left for this round,
 //    instead of kept for the tree pass to rebuild every round;
 //  - kConeFirst: as kUndoOvergrowth, and a component with no star point is
-//    first split by a partial cone (step 3), before any growth.
+//    first split by a partial cone (step 3), before any growth;
+//  - kSmallCavities: as kDefault, but only components of at most
+//    kMaxSmallCavityFaces = 64 faces are filled as one cavity (steps 1-3);
+//    the larger ones get patch cones and advances (steps 4 and 5) instead
+//    of growing (a thin flat cavity against the surface otherwise grows
+//    past kMaxGrownFaces every round and the tree pass rebuilds what it
+//    deleted: rotor r3).
 // The first strategy that closes the front wins. When none does, the state
 // of the attempt that left the fewest faces (the earliest on ties) is
 // kept. Inputs the default closes are unchanged: the rescues never run.
@@ -106,9 +112,10 @@ enum class TreelessStrategy : uint8_t {
   kDefault,         // a growth step past kMaxGrownFaces is kept
   kUndoOvergrowth,  // a growth step past kMaxGrownFaces is undone
   kConeFirst,       // as kUndoOvergrowth, and a partial cone before the first growth
+  kSmallCavities,   // as kDefault, with components of at most 64 faces filled as one cavity
 };
 constexpr TreelessStrategy kTreelessStrategies[] = {TreelessStrategy::kDefault, TreelessStrategy::kUndoOvergrowth,
-                                                    TreelessStrategy::kConeFirst};
+                                                    TreelessStrategy::kConeFirst, TreelessStrategy::kSmallCavities};
 const char* strategy_name(TreelessStrategy strategy);
 
 struct TreelessCounts {
