@@ -3,8 +3,9 @@
 // multi-shell bodies close completely, and the result with the surface is
 // a valid mesh; new vertices carry ids in their own space; two runs give
 // the same mesh; when the default strategy leaves faces, a rescue strategy
-// closes them or the best attempt is kept. Also the pieces: the deepest kernel point of a front, the
-// reopening of a tet (Front::remove_tet) and the tet behind a face.
+// closes them or the best attempt is kept. Also the pieces: the deepest
+// kernel point of a front, the reopening of a tet (Front::remove_tet) and
+// the tet behind a face.
 #include <gtest/gtest.h>
 
 #include <cstdio>
