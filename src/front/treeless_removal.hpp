@@ -83,9 +83,11 @@
 //    of growing (a thin flat cavity against the surface otherwise grows
 //    past kMaxGrownFaces every round and the tree pass rebuilds what it
 //    deleted: rotor r3).
-// The first strategy that closes the front wins. When none does, the state
-// of the attempt that left the fewest faces (the earliest on ties) is
-// kept. Inputs the default closes are unchanged: the rescues never run.
+// The starting state is copied before the default runs, and a failed
+// attempt is copied while it is the best. The first strategy that closes
+// the front wins. When none does, the state of the attempt that left the
+// fewest faces (the earliest on ties) is kept. Inputs the default closes
+// are unchanged: the rescues never run.
 //
 // Termination: each round either changes the mesh, spending budget (a new
 // vertex or a deletion) or making tets by tree-supported removal, which
@@ -106,8 +108,8 @@ namespace partet {
 
 constexpr uint64_t kSteinerVertexId = kSurfaceVertexId | (uint64_t{1} << 62);
 
-// How the rounds treat a cavity that is not star-shaped (steps 2 and 3
-// above), in the order a call tries them.
+// How the rounds treat the components one star point does not close
+// (steps 1-5 above), in the order a call tries them (see Rescue).
 enum class TreelessStrategy : uint8_t {
   kDefault,         // a growth step past kMaxGrownFaces is kept
   kUndoOvergrowth,  // a growth step past kMaxGrownFaces is undone
