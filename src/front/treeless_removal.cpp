@@ -660,20 +660,25 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
-  if (!options.rescue) return TreelessRemover(front, tree, root, out, options, m, TreelessStrategy::kDefault).run();
+  if (!options.rescue) {
+    TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, TreelessStrategy::kDefault).run();
+    n.faces_left_by_attempt = {n.faces_left};
+    return n;
+  }
   const TreelessState start{front, tree.cls, out, m, {}};
   std::optional<TreelessState> best;
-  size_t attempts = 0;
+  std::vector<size_t> faces_left;
   for (TreelessStrategy strategy : kTreelessStrategies) {
-    if (attempts++ > 0) start.restore(front, tree, out, m);
+    if (!faces_left.empty()) start.restore(front, tree, out, m);
     TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, strategy).run();
-    n.attempts = attempts;
+    faces_left.push_back(n.faces_left);
+    n.faces_left_by_attempt = faces_left;
     if (n.faces_left == 0) return n;
     if (!best || n.faces_left < best->counts.faces_left) best = TreelessState{front, tree.cls, out, m, n};
   }
   // None closed the front: the attempt that left the fewest faces.
   best->restore(front, tree, out, m);
-  best->counts.attempts = attempts;
+  best->counts.faces_left_by_attempt = faces_left;
   return best->counts;
 }
 

@@ -97,6 +97,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/tet_mesh.hpp"
 #include "front/face_removal.hpp"
@@ -134,7 +135,7 @@ struct TreelessCounts {
   size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
   bool stalled = false;        // ended by stall_rounds rounds without a smaller front
   TreelessStrategy strategy = TreelessStrategy::kDefault;  // of the attempt these counts are from
-  size_t attempts = 1;         // strategies tried
+  std::vector<size_t> faces_left_by_attempt;  // per strategy tried, in order
 };
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`
