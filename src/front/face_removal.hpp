@@ -61,6 +61,10 @@ struct RemovalOptions {
   // rounds; t13 r2 closes in 132, with new smallest fronts more than 32
   // rounds apart).
   size_t stall_rounds = 64;
+  // Tree-less removals only: when the default strategy leaves faces, the
+  // call starts again from its starting state with each rescue strategy in
+  // turn (treeless_removal.hpp); false: the default strategy only.
+  bool rescue = true;
 };
 
 // What earlier calls learnt: per face slot, the front's change counter when

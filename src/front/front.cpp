@@ -55,7 +55,7 @@ Front::Triple Front::sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
 uint64_t Front::EdgeTraits::hash(uint64_t k) { return mix(k); }
 
 Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root)
-    : tree_(tree),
+    : tree_(&tree),
       root_(root),
       query_(tree),
       xyz_(initial.xyz),
@@ -232,7 +232,7 @@ uint32_t Front::add_vertex(const double* p, uint64_t global_id) {
   const uint32_t v = static_cast<uint32_t>(vertex_leaf_.size());
   xyz_.insert(xyz_.end(), p, p + 3);
   global_ids_.push_back(global_id);
-  vertex_leaf_.push_back(leaf_of_point(tree_, root_, p));
+  vertex_leaf_.push_back(leaf_of_point(*tree_, root_, p));
   vertex_uses_.push_back(0);
   vertex_prev_.push_back(kNoIndex);
   vertex_next_.push_back(kNoIndex);

@@ -154,8 +154,9 @@ class Front {
   void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
   void change_edge(uint32_t a, uint32_t b, int delta);
 
-  const LinearOctree& tree_;
-  const RootCube root_;
+  const LinearOctree* tree_;  // pointers and values: a Front is assignable (the tree-less
+                              // removals restore a snapshot of it)
+  RootCube root_;
   LeafRangeQuery query_;
   std::vector<size_t> leaves_scratch_;
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,7 @@ double squared_distance(const double* x, const double* y) {
 }
 
 constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown) as one cavity
+constexpr size_t kMaxSmallCavityFaces = 64;  // the same, with TreelessStrategy::kSmallCavities
 constexpr int kMaxGrowth = 8;
 constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
 constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
@@ -41,8 +43,8 @@ constexpr double kPatchLift = 0.75;
 class TreelessRemover {
  public:
   TreelessRemover(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out, const RemovalOptions& options,
-                  RemovalMemo& memo)
-      : front_(front), tree_(tree), root_(root), out_(out), options_(options), memo_(memo) {}
+                  RemovalMemo& memo, TreelessStrategy strategy)
+      : front_(front), tree_(tree), root_(root), out_(out), options_(options), memo_(memo), strategy_(strategy) {}
 
   TreelessCounts run();
 
@@ -85,6 +87,10 @@ class TreelessRemover {
   // Deletes the tets behind the faces that do not see q (with `every`,
   // behind all the faces); false when none.
   bool reopen_blockers(const std::vector<uint32_t>& faces, const double* q, bool every);
+  // Undoes the deletions in reopened_, newest first: each tet is made
+  // again (appended to `out`) from one of its faces the deletion opened,
+  // so the front is as before the deletions.
+  void restore_reopened();
   // Alive faces grouped by edge-connected component: components_ holds the
   // faces, component_first_ the start of each (plus one past the end).
   void find_components();
@@ -99,6 +105,7 @@ class TreelessRemover {
   TetMesh& out_;
   const RemovalOptions& options_;
   RemovalMemo& memo_;
+  const TreelessStrategy strategy_;
   TreelessCounts counts_;
   bool ids_ = false;
   size_t vertex_budget_ = 0;
@@ -108,6 +115,10 @@ class TreelessRemover {
   std::vector<size_t> leaves_;
   NearFront near_;
   std::vector<uint32_t> added_, shrunk_;
+  // Tets deleted by the current growth step; false when one of them had
+  // all four faces on the front (its deletion opened none to rebuild it from).
+  std::vector<uint32_t> reopened_;
+  bool restorable_ = true;
   std::vector<uint32_t> components_;
   std::vector<size_t> component_first_;
   std::vector<uint32_t> walk_mark_;  // per face slot: the walk that last reached it
@@ -271,16 +282,31 @@ bool TreelessRemover::reopen_blockers(const std::vector<uint32_t>& faces, const 
     shrunk_.clear();
     front_.remove_tet(&out_.tets[4 * size_t{tet}], added_, shrunk_);
     incidence_->kill(tet);
+    reopened_.push_back(tet);
+    restorable_ = restorable_ && !added_.empty();
     ++counts_.tets_deleted;
     ++deleted;
   }
   return deleted > 0;
 }
 
+void TreelessRemover::restore_reopened() {
+  for (auto it = reopened_.rbegin(); it != reopened_.rend(); ++it) {
+    const uint32_t* v = &out_.tets[4 * size_t{*it}];
+    const uint32_t a = v[0], b = v[1], c = v[2], d = v[3];
+    const uint32_t sides[4][4] = {{a, b, c, d}, {b, d, c, a}, {a, c, d, b}, {a, d, b, c}};
+    uint32_t g = kNoIndex, apex = kNoIndex;
+    for (const auto& side : sides)
+      if (g == kNoIndex && (g = front_.find_face(side[0], side[1], side[2])) != kNoIndex) apex = side[3];
+    PARTET_ASSERT(g != kNoIndex, "a reopened tet has a face to be rebuilt from");
+    make_removal_tet(front_, tree_, out_, g, apex, added_, shrunk_);
+  }
+  reopened_.clear();
+}
+
 bool TreelessRemover::fill(std::vector<uint32_t> faces) {
   KernelPoint kernel;
   for (int growth = 0;; ++growth) {
-    if (faces.size() > kMaxGrownFaces) return false;
     kernel = deepest_kernel_point(front_, faces);
     // Candidates: the kernel's deepest point, the mean of the face
     // centroids, the mean of the vertices.
@@ -303,11 +329,20 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
         ++counts_.star_fills;
         return true;
       }
+    // With kConeFirst a cavity that is not star-shaped (its deepest point
+    // lies outside the kernel) is first split by a partial cone to that
+    // point, before any tet is deleted.
+    if (strategy_ == TreelessStrategy::kConeFirst && growth == 0 && kernel.found && cone(faces, kernel.point) > 0) {
+      ++counts_.partial_cones;
+      return true;
+    }
     // Without a kernel (e.g. a flat cavity between coplanar faces) the
     // faces that do not see the mean of the vertices are reopened. When
     // only surface faces block the point, every face with a tet behind it
     // is reopened: the cavity grows away from the surface.
     const double* q = kernel.found ? kernel.point : candidates[2];
+    reopened_.clear();
+    restorable_ = true;
     if (growth == kMaxGrowth || !(reopen_blockers(faces, q, false) || reopen_blockers(faces, q, true))) break;
     // The grown component: the one holding an alive face of the old one or
     // a face the deletions added.
@@ -318,6 +353,16 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
       if (seed == kNoIndex && front_.alive(f)) seed = f;
     if (seed == kNoIndex) return true;  // the deletions closed it
     faces = component_of(seed, kMaxGrownFaces + 1);
+    if (faces.size() > kMaxGrownFaces) {
+      // Grown into a component too large for one cavity: it is left for
+      // this round. With kUndoOvergrowth and kConeFirst the step's
+      // deletions are undone (kept, the tree pass would rebuild the same
+      // tets and the next round would grow the same way again).
+      const bool undo =
+          strategy_ == TreelessStrategy::kUndoOvergrowth || strategy_ == TreelessStrategy::kConeFirst;
+      if (undo && restorable_) restore_reopened();
+      return false;
+    }
   }
   if (kernel.found && cone(faces, kernel.point) > 0) {
     ++counts_.partial_cones;
@@ -525,6 +570,7 @@ TreelessCounts TreelessRemover::run() {
   vertex_budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
   deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
+  const size_t max_cavity = strategy_ == TreelessStrategy::kSmallCavities ? kMaxSmallCavityFaces : kMaxCavityFaces;
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;
   bool changed = front_.num_alive_faces() > 0;
@@ -539,7 +585,7 @@ TreelessCounts TreelessRemover::run() {
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {
       const auto first = components_.begin() + static_cast<ptrdiff_t>(component_first_[i]);
       const auto last = components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]);
-      if (last - first <= static_cast<ptrdiff_t>(kMaxCavityFaces))
+      if (last - first <= static_cast<ptrdiff_t>(max_cavity))
         cavities.emplace_back(first, last);
       else
         stuck.insert(stuck.end(), first, last);
@@ -576,16 +622,64 @@ TreelessCounts TreelessRemover::run() {
   }
   if (incidence_) incidence_->drop_dead_tets(out_);
   counts_.faces_left = front_.num_alive_faces();
+  counts_.strategy = strategy_;
   return counts_;
 }
 
+// Everything a run changes: the state a rescue starts again from, or the
+// result of an attempt.
+struct TreelessState {
+  Front front;
+  std::vector<LeafClass> cls;
+  TetMesh out;
+  RemovalMemo memo;
+  TreelessCounts counts;
+
+  void restore(Front& f, LinearOctree& tree, TetMesh& o, RemovalMemo& m) const {
+    f = front;
+    tree.cls = cls;
+    o = out;
+    m = memo;
+  }
+};
+
 }  // namespace
+
+const char* strategy_name(TreelessStrategy strategy) {
+  switch (strategy) {
+    case TreelessStrategy::kDefault: return "default";
+    case TreelessStrategy::kUndoOvergrowth: return "undo overgrowth";
+    case TreelessStrategy::kConeFirst: return "cone first";
+    case TreelessStrategy::kSmallCavities: return "small cavities";
+  }
+  return "?";
+}
 
 TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
                                      const RemovalOptions& options, RemovalMemo* memo) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
   RemovalMemo own;
-  return TreelessRemover(front, tree, root, out, options, memo ? *memo : own).run();
+  RemovalMemo& m = memo ? *memo : own;
+  if (!options.rescue) {
+    TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, TreelessStrategy::kDefault).run();
+    n.faces_left_by_attempt = {n.faces_left};
+    return n;
+  }
+  const TreelessState start{front, tree.cls, out, m, {}};
+  std::optional<TreelessState> best;
+  std::vector<size_t> faces_left;
+  for (TreelessStrategy strategy : kTreelessStrategies) {
+    if (!faces_left.empty()) start.restore(front, tree, out, m);
+    TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, strategy).run();
+    faces_left.push_back(n.faces_left);
+    n.faces_left_by_attempt = faces_left;
+    if (n.faces_left == 0) return n;
+    if (!best || n.faces_left < best->counts.faces_left) best = TreelessState{front, tree.cls, out, m, n};
+  }
+  // None closed the front: the attempt that left the fewest faces.
+  best->restore(front, tree, out, m);
+  best->counts.faces_left_by_attempt = faces_left;
+  return best->counts;
 }
 
 }  // namespace partet

@@ -63,6 +63,32 @@
 // surface vertices are kSurfaceVertexId | s with s < 2^32 (bit 62 clear),
 // so the three id spaces are disjoint.
 //
+// Rescue: the rounds are chaotic (a change to how a cavity is treated
+// closes one input and stalls another), so other strategies run only where
+// the default fails. When the default ends with faces left (stalled, a
+// budget spent, or a round that changes nothing), the front, `out`, the
+// tree's leaf classes and `memo` are restored to what they were at the
+// call's start and the rounds run again with the next TreelessStrategy
+// (options.rescue, default true; false: the default only):
+//  - kUndoOvergrowth: a growth step (step 2) that takes the component
+//    beyond kMaxGrownFaces is undone (its tets are made again, newest
+//    first, from a face each deletion opened; kept when one of them had all
+//    four faces on the front) and the component is left for this round,
+//    instead of kept for the tree pass to rebuild every round;
+//  - kConeFirst: as kUndoOvergrowth, and a component with no star point is
+//    first split by a partial cone (step 3), before any growth;
+//  - kSmallCavities: as kDefault, but only components of at most
+//    kMaxSmallCavityFaces = 64 faces are filled as one cavity (steps 1-3);
+//    the larger ones get patch cones and advances (steps 4 and 5) instead
+//    of growing (a thin flat cavity against the surface otherwise grows
+//    past kMaxGrownFaces every round and the tree pass rebuilds what it
+//    deleted: rotor r3).
+// The starting state is copied before the default runs, and a failed
+// attempt is copied while it is the best. The first strategy that closes
+// the front wins. When none does, the state of the attempt that left the
+// fewest faces (the earliest on ties) is kept. Inputs the default closes
+// are unchanged: the rescues never run.
+//
 // Termination: each round either changes the mesh, spending budget (a new
 // vertex or a deletion) or making tets by tree-supported removal, which
 // terminates (face_removal.hpp); a round that changes nothing ends the
@@ -71,6 +97,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/tet_mesh.hpp"
 #include "front/face_removal.hpp"
@@ -81,6 +108,18 @@
 namespace partet {
 
 constexpr uint64_t kSteinerVertexId = kSurfaceVertexId | (uint64_t{1} << 62);
+
+// How the rounds treat the components one star point does not close
+// (steps 1-5 above), in the order a call tries them (see Rescue).
+enum class TreelessStrategy : uint8_t {
+  kDefault,         // a growth step past kMaxGrownFaces is kept
+  kUndoOvergrowth,  // a growth step past kMaxGrownFaces is undone
+  kConeFirst,       // as kUndoOvergrowth, and a partial cone before the first growth
+  kSmallCavities,   // as kDefault, with components of at most 64 faces filled as one cavity
+};
+constexpr TreelessStrategy kTreelessStrategies[] = {TreelessStrategy::kDefault, TreelessStrategy::kUndoOvergrowth,
+                                                    TreelessStrategy::kConeFirst, TreelessStrategy::kSmallCavities};
+const char* strategy_name(TreelessStrategy strategy);
 
 struct TreelessCounts {
   size_t tree_tets = 0;        // made by the tree-supported runs inside
@@ -95,6 +134,8 @@ struct TreelessCounts {
   size_t faces_left = 0;
   size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
   bool stalled = false;        // ended by stall_rounds rounds without a smaller front
+  TreelessStrategy strategy = TreelessStrategy::kDefault;  // of the attempt these counts are from
+  std::vector<size_t> faces_left_by_attempt;  // per strategy tried, in order
 };
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`

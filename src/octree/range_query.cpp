@@ -38,7 +38,7 @@ void grid_range(const RootCube& root, const double* blo, const double* bhi, uint
   }
 }
 
-LeafRangeQuery::LeafRangeQuery(const LinearOctree& tree) : tree_(tree), anchor_(3 * tree.size()) {
+LeafRangeQuery::LeafRangeQuery(const LinearOctree& tree) : tree_(&tree), anchor_(3 * tree.size()) {
   PARTET_ASSERT(tree.size() < UINT32_MAX, "too many leaves for the search table");
   for (size_t i = 0; i < tree.size(); ++i) tree.anchor(i, anchor_[3 * i], anchor_[3 * i + 1], anchor_[3 * i + 2]);
   // Table level: about one cell per leaf, at most 8^7 cells.
@@ -57,7 +57,7 @@ LeafRangeQuery::LeafRangeQuery(const LinearOctree& tree) : tree_(tree), anchor_(
 
 size_t LeafRangeQuery::upper_bound(uint64_t key) const {
   const uint64_t cell = key >> table_shift_;
-  const auto first = tree_.key.begin();
+  const auto first = tree_->key.begin();
   return static_cast<size_t>(std::upper_bound(first + table_[cell], first + table_[cell + 1], key) - first);
 }
 
@@ -65,7 +65,7 @@ size_t LeafRangeQuery::locate(uint32_t x, uint32_t y, uint32_t z) const { return
 
 size_t LeafRangeQuery::locate_near(size_t hint, uint32_t x, uint32_t y, uint32_t z) const {
   const uint64_t key = morton_key(x, y, z);
-  const std::vector<uint64_t>& keys = tree_.key;
+  const std::vector<uint64_t>& keys = tree_->key;
   const size_t n = keys.size();
   // Bracket the answer, the last leaf whose key is not above `key`, in
   // [lo, hi) by doubling steps away from the hint.
@@ -100,12 +100,12 @@ void LeafRangeQuery::descend(uint64_t key, const uint32_t* a, int level, size_t 
   }
   if (e - b <= kScanRun) {
     for (size_t i = b; i < e; ++i)
-      if (overlaps(&anchor_[3 * i], octant_edge(tree_.level[i]), lo, hi)) out.push_back(i);
+      if (overlaps(&anchor_[3 * i], octant_edge(tree_->level[i]), lo, hi)) out.push_back(i);
     return;
   }
   const uint64_t span = octant_key_span(level + 1);
   const uint32_t h = octant_edge(level + 1);
-  const auto first = tree_.key.begin();
+  const auto first = tree_->key.begin();
   size_t cb = b;
   for (uint32_t c = 0; c < 8; ++c) {
     const uint32_t ca[3] = {a[0] + ((c & 1) ? h : 0), a[1] + ((c & 2) ? h : 0), a[2] + ((c & 4) ? h : 0)};
@@ -131,13 +131,13 @@ void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std
       for (uint32_t x = lo[0] & ~(edge - 1); x <= hi[0]; x += edge) keys[count++] = morton_key(x, y, z);
   for (int k = 1; k < count; ++k)  // insertion sort (at most 8 keys)
     for (int j = k; j > 0 && keys[j - 1] > keys[j]; --j) std::swap(keys[j - 1], keys[j]);
-  const size_t n = tree_.size();
+  const size_t n = tree_->size();
   size_t next = n;  // the leaf after the previous octant's run
   for (int k = 0; k < count; ++k) {
     // The leaf containing the octant's anchor: often the one right after
     // the previous octant's run (consecutive in Morton order).
-    const size_t b = next < n && tree_.key[next] == keys[k] ? next : upper_bound(keys[k]) - 1;
-    if (tree_.level[b] <= level) {  // the octant lies inside leaf b
+    const size_t b = next < n && tree_->key[next] == keys[k] ? next : upper_bound(keys[k]) - 1;
+    if (tree_->level[b] <= level) {  // the octant lies inside leaf b
       if (out.empty() || out.back() != b) out.push_back(b);
       next = b + 1;
       continue;
@@ -146,15 +146,15 @@ void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std
     // short runs, descend long ones.
     const uint64_t end_key = keys[k] + octant_key_span(level);
     size_t e = b;
-    while (e < n && e - b <= kScanRun && tree_.key[e] < end_key) ++e;
-    if (e < n && tree_.key[e] < end_key) {
+    while (e < n && e - b <= kScanRun && tree_->key[e] < end_key) ++e;
+    if (e < n && tree_->key[e] < end_key) {
       e = upper_bound(end_key - 1);
       uint32_t a[3];
       morton_decode(keys[k], a[0], a[1], a[2]);
       descend(keys[k], a, level, b, e, lo, hi, out);
     } else {
       for (size_t i = b; i < e; ++i)
-        if (overlaps(&anchor_[3 * i], octant_edge(tree_.level[i]), lo, hi)) out.push_back(i);
+        if (overlaps(&anchor_[3 * i], octant_edge(tree_->level[i]), lo, hi)) out.push_back(i);
     }
     next = e;
   }

@@ -45,7 +45,7 @@ class LeafRangeQuery {
 
   // The grid cells [lo, hi] (inclusive) of leaf `leaf`.
   void leaf_cells(size_t leaf, uint32_t* lo, uint32_t* hi) const {
-    const uint32_t h = octant_edge(tree_.level[leaf]) - 1;
+    const uint32_t h = octant_edge(tree_->level[leaf]) - 1;
     for (int i = 0; i < 3; ++i) {
       lo[i] = anchor_[3 * leaf + i];
       hi[i] = lo[i] + h;
@@ -55,7 +55,7 @@ class LeafRangeQuery {
   // the stored anchor instead of decoding the key).
   void leaf_box(const RootCube& root, size_t leaf, double* lo, double* hi) const {
     const uint32_t* a = &anchor_[3 * leaf];
-    octant_box(root, a[0], a[1], a[2], tree_.level[leaf], lo, hi);
+    octant_box(root, a[0], a[1], a[2], tree_->level[leaf], lo, hi);
   }
 
  private:
@@ -65,7 +65,7 @@ class LeafRangeQuery {
   void descend(uint64_t key, const uint32_t* a, int level, size_t b, size_t e, const uint32_t* lo,
                const uint32_t* hi, std::vector<size_t>& out) const;
 
-  const LinearOctree& tree_;
+  const LinearOctree* tree_;  // a pointer: the query is assignable
   std::vector<uint32_t> anchor_;  // 3 grid coordinates per leaf
   int table_shift_ = 0;           // key >> table_shift_ = table cell
   std::vector<uint32_t> table_;   // per cell, plus one: first leaf with key >= the cell's first key

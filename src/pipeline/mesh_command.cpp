@@ -163,6 +163,25 @@ std::string where_left(const SurfaceMesh& left) {
   return text;
 }
 
+// How the tree-less removals ended when they left faces, for the error:
+// " (the tree-less removals tried 4 strategies, leaving 706, 402, 270 and
+// 310 faces; this front is what \"cone first\" left, stalled: 64 rounds
+// without a smaller front)".
+std::string treeless_ending(const TreelessCounts& n) {
+  std::string text;
+  const std::vector<size_t>& left = n.faces_left_by_attempt;
+  if (left.size() > 1) {
+    text = "the tree-less removals tried " + std::to_string(left.size()) + " strategies, leaving ";
+    for (size_t i = 0; i < left.size(); ++i)
+      text += (i == 0 ? "" : i + 1 == left.size() ? " and " : ", ") + std::to_string(left[i]);
+    text += std::string(" faces; this front is what \"") + strategy_name(n.strategy) + "\" left";
+  }
+  if (n.stalled)
+    text += (text.empty() ? "the tree-less removals " : ", ") + std::string("stalled: ") +
+            std::to_string(RemovalOptions{}.stall_rounds) + " rounds without a smaller front";
+  return text.empty() ? text : " (" + text + ")";
+}
+
 // OUTPUT's stem + ".front.off": where --keep-partial puts the front left.
 std::string partial_front_path(const std::string& output) {
   size_t dot = output.find_last_of('.');
@@ -498,7 +517,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       SurfaceMesh left;
       std::unique_ptr<Front> front;
       RemovalMemo memo;
-      bool stalled = false;
+      std::string treeless_note;  // how the tree-less removals ended, when they left faces
       report.run_step("face removals (tree)", [&] {
         if (!root_rank) return ojson::object();
         front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
@@ -535,8 +554,10 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["advances"] = n.advances;
           c["rounds"] = n.rounds;
           c["stalled"] = n.stalled;
+          c["strategy"] = strategy_name(n.strategy);
+          c["faces left by attempt"] = n.faces_left_by_attempt;
           c["faces left"] = n.faces_left;
-          stalled = n.stalled;
+          treeless_note = treeless_ending(n);
           return c;
         });
       }
@@ -555,8 +576,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
             return c;
           });
         }
-        throw MeshingError(options.input + ": face removals could not close the front: " + where_left(left) +
-                           (stalled ? " (the tree-less removals stalled: " + std::to_string(RemovalOptions{}.stall_rounds) + " rounds without a smaller front)" : "") +
+        throw MeshingError(options.input + ": face removals could not close the front: " + where_left(left) + treeless_note +
                            (options.keep_partial ? "; the tets made and the front left were written"
                                                                     : "; nothing was written (--keep-partial writes "
                                                                       "the tets made and the front left)"));

@@ -2,11 +2,14 @@
 // pipeline: every surface of data/ (good and fixable) and generated
 // multi-shell bodies close completely, and the result with the surface is
 // a valid mesh; new vertices carry ids in their own space; two runs give
-// the same mesh. Also the pieces: the deepest kernel point of a front, the
-// reopening of a tet (Front::remove_tet) and the tet behind a face.
+// the same mesh; when the default strategy leaves faces, a rescue strategy
+// closes them or the best attempt is kept. Also the pieces: the deepest
+// kernel point of a front, the reopening of a tet (Front::remove_tet) and
+// the tet behind a face.
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <utility>
 
@@ -125,11 +128,13 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
 }
 
 // pipe refined once: its front does not shrink in the first round (it
-// closes after about 50). With stall_rounds 1 the call stops there,
-// stalled, and leaves a valid partial mesh; sphere966 closes unstalled.
+// closes after about 50). With stall_rounds 1 and no rescue the call stops
+// there, stalled, and leaves a valid partial mesh; sphere966 closes
+// unstalled.
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
+  impatient.rescue = false;
   const Meshed stopped =
       mesh_surface(refine_midpoints(read_surface_file(data_path("good/pipe.off"))), "good/pipe.off r1", impatient);
   EXPECT_TRUE(stopped.counts.stalled);
@@ -138,6 +143,35 @@ TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   const Meshed closed = mesh_file("good/sphere966.off");
   EXPECT_FALSE(closed.counts.stalled);
   EXPECT_EQ(closed.faces_left, 0u);
+}
+
+// pipe refined once with stall_rounds 6: the default strategy stalls (its
+// front shrinks again only after more than 6 rounds); the call restarts
+// from its starting state and kUndoOvergrowth closes it (in 18 rounds),
+// into a mesh partet check's validator passes (mesh_surface). With
+// stall_rounds 1 every strategy stalls after its first round: the call
+// keeps the attempt that left the fewest faces, at most what the default
+// alone leaves, as a valid partial mesh.
+TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
+  const SurfaceMesh pipe = refine_midpoints(read_surface_file(data_path("good/pipe.off")));
+  RemovalOptions patient;
+  patient.stall_rounds = 6;
+  const Meshed rescued = mesh_surface(pipe, "good/pipe.off r1, stall 6", patient);
+  EXPECT_EQ(rescued.faces_left, 0u);
+  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kUndoOvergrowth);
+  EXPECT_EQ(rescued.counts.faces_left_by_attempt.size(), 2u);
+  EXPECT_GT(rescued.counts.faces_left_by_attempt[0], 0u);
+  EXPECT_FALSE(rescued.counts.stalled);
+
+  RemovalOptions impatient;
+  impatient.stall_rounds = 1;
+  const Meshed best = mesh_surface(pipe, "good/pipe.off r1, stall 1", impatient);
+  impatient.rescue = false;
+  const Meshed alone = mesh_surface(pipe, "good/pipe.off r1, stall 1, no rescue", impatient);
+  EXPECT_EQ(best.counts.faces_left_by_attempt.size(), std::size(kTreelessStrategies));
+  EXPECT_GT(best.faces_left, 0u);
+  EXPECT_LE(best.faces_left, alone.faces_left);
+  EXPECT_EQ(alone.counts.faces_left_by_attempt, std::vector<size_t>{alone.faces_left});
 }
 
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
