@@ -62,9 +62,10 @@ struct RemovalOptions {
   // rounds apart).
   size_t stall_rounds = 64;
   // Tree-less removals only: when the default strategy leaves faces, the
-  // call starts again from its starting state with each rescue strategy in
-  // turn (treeless_removal.hpp); false: the default strategy only.
-  bool rescue = true;
+  // call starts again from its starting state with each of the first
+  // `rescues` rescue strategies in turn (treeless_removal.hpp; at most 3,
+  // 0: the default strategy only).
+  int rescues = 3;
 };
 
 // What earlier calls learnt: per face slot, the front's change counter when

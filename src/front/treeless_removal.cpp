@@ -660,7 +660,9 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
-  if (!options.rescue) {
+  const size_t attempts = 1 + std::clamp<size_t>(static_cast<size_t>(std::max(options.rescues, 0)), 0,
+                                                  std::size(kTreelessStrategies) - 1);
+  if (attempts == 1) {
     TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, TreelessStrategy::kDefault).run();
     n.faces_left_by_attempt = {n.faces_left};
     return n;
@@ -668,7 +670,8 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   const TreelessState start{front, tree.cls, out, m, {}};
   std::optional<TreelessState> best;
   std::vector<size_t> faces_left;
-  for (TreelessStrategy strategy : kTreelessStrategies) {
+  for (size_t i = 0; i < attempts; ++i) {
+    const TreelessStrategy strategy = kTreelessStrategies[i];
     if (!faces_left.empty()) start.restore(front, tree, out, m);
     TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, strategy).run();
     faces_left.push_back(n.faces_left);

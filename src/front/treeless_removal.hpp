@@ -69,7 +69,8 @@
 // budget spent, or a round that changes nothing), the front, `out`, the
 // tree's leaf classes and `memo` are restored to what they were at the
 // call's start and the rounds run again with the next TreelessStrategy
-// (options.rescue, default true; false: the default only):
+// (the first options.rescues of these, by default all three; 0: the
+// default only):
 //  - kUndoOvergrowth: a growth step (step 2) that takes the component
 //    beyond kMaxGrownFaces is undone (its tets are made again, newest
 //    first, from a face each deletion opened; kept when one of them had all

@@ -134,7 +134,7 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
-  impatient.rescue = false;
+  impatient.rescues = 0;
   const Meshed stopped =
       mesh_surface(refine_midpoints(read_surface_file(data_path("good/pipe.off"))), "good/pipe.off r1", impatient);
   EXPECT_TRUE(stopped.counts.stalled);
@@ -145,31 +145,30 @@ TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   EXPECT_EQ(closed.faces_left, 0u);
 }
 
-// pipe refined once with stall_rounds 6: the default strategy stalls (its
-// front shrinks again only after more than 6 rounds); the call restarts
-// from its starting state and kUndoOvergrowth closes it (in 18 rounds),
-// into a mesh partet check's validator passes (mesh_surface). With
-// stall_rounds 1 every strategy stalls after its first round: the call
-// keeps the attempt that left the fewest faces, at most what the default
-// alone leaves, as a valid partial mesh.
+// part refined twice with stall_rounds 1: the default strategy stalls
+// (192 faces left) and so does kUndoOvergrowth; the call restarts from its
+// starting state each time and kConeFirst closes it, into a mesh partet
+// check's validator passes (mesh_surface). With one rescue allowed both
+// attempts fail: the call keeps the one that left the fewer faces, at most
+// what the default alone leaves, as a valid partial mesh.
 TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
-  const SurfaceMesh pipe = refine_midpoints(read_surface_file(data_path("good/pipe.off")));
-  RemovalOptions patient;
-  patient.stall_rounds = 6;
-  const Meshed rescued = mesh_surface(pipe, "good/pipe.off r1, stall 6", patient);
-  EXPECT_EQ(rescued.faces_left, 0u);
-  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kUndoOvergrowth);
-  EXPECT_EQ(rescued.counts.faces_left_by_attempt.size(), 2u);
-  EXPECT_GT(rescued.counts.faces_left_by_attempt[0], 0u);
-  EXPECT_FALSE(rescued.counts.stalled);
-
+  const SurfaceMesh part = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/part.off"))));
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
-  const Meshed best = mesh_surface(pipe, "good/pipe.off r1, stall 1", impatient);
-  impatient.rescue = false;
-  const Meshed alone = mesh_surface(pipe, "good/pipe.off r1, stall 1, no rescue", impatient);
-  EXPECT_EQ(best.counts.faces_left_by_attempt.size(), std::size(kTreelessStrategies));
+  const Meshed rescued = mesh_surface(part, "good/part.off r2, stall 1", impatient);
+  EXPECT_EQ(rescued.faces_left, 0u);
+  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kConeFirst);
+  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 3u);
+  EXPECT_GT(rescued.counts.faces_left_by_attempt[0], 0u);
+  EXPECT_GT(rescued.counts.faces_left_by_attempt[1], 0u);
+
+  impatient.rescues = 1;
+  const Meshed best = mesh_surface(part, "good/part.off r2, stall 1, one rescue", impatient);
+  impatient.rescues = 0;
+  const Meshed alone = mesh_surface(part, "good/part.off r2, stall 1, no rescue", impatient);
+  ASSERT_EQ(best.counts.faces_left_by_attempt.size(), 2u);
   EXPECT_GT(best.faces_left, 0u);
+  EXPECT_EQ(best.faces_left, std::min(best.counts.faces_left_by_attempt[0], best.counts.faces_left_by_attempt[1]));
   EXPECT_LE(best.faces_left, alone.faces_left);
   EXPECT_EQ(alone.counts.faces_left_by_attempt, std::vector<size_t>{alone.faces_left});
 }
