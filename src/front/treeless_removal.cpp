@@ -660,8 +660,8 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
-  const size_t attempts = 1 + std::clamp<size_t>(static_cast<size_t>(std::max(options.rescues, 0)), 0,
-                                                  std::size(kTreelessStrategies) - 1);
+  const size_t attempts =
+      1 + std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kTreelessStrategies) - 1);
   if (attempts == 1) {
     TreelessCounts n = TreelessRemover(front, tree, root, out, options, m, TreelessStrategy::kDefault).run();
     n.faces_left_by_attempt = {n.faces_left};
