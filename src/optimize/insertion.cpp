@@ -31,6 +31,13 @@ std::vector<uint32_t> sorted_copy(std::vector<uint32_t> items) {
   return items;
 }
 
+// Face `code` of a tet of the cavity whose tets are `members` (sorted)
+// is an outer face: no tet behind it, or one outside the cavity.
+bool outer_face(const TetTopology& topo, const std::vector<uint32_t>& members, uint32_t code) {
+  const uint32_t other = topo.twin(code);
+  return other == TetTopology::kNone || !std::binary_search(members.begin(), members.end(), other / 4);
+}
+
 double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
@@ -62,8 +69,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   // Each outer face is coned to v: its tet with the opposite vertex replaced.
   for (uint32_t t : cavity) {
     for (int f = 0; f < 4; ++f) {
-      const uint32_t other = topo.twin(4 * t + f);
-      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
+      if (!outer_face(topo, members, 4 * t + f)) continue;
       uint32_t tet[4];
       std::copy_n(topo.tet(t), 4, tet);
       tet[f] = v;
@@ -122,8 +128,7 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
   const std::vector<uint32_t> members = sorted_copy(cavity);
   for (uint32_t t : cavity)
     for (int f = 0; f < 4; ++f) {
-      const uint32_t other = topo.twin(4 * t + f);
-      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
+      if (!outer_face(topo, members, 4 * t + f)) continue;
       uint32_t tri[3];
       int n = 0;
       for (int k = 0; k < 4; ++k)
