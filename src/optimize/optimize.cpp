@@ -5,7 +5,8 @@
 //     tets still below the target join the end of the work list, whose
 //     length is capped.
 //  2. insertion: a new interior vertex for each tet still below the
-//     insertion bar, worst first, where it pays (insertion.hpp);
+//     insertion bar, worst first, where it pays (insertion.hpp), else one
+//     of its vertices collapsed where that pays (collapse.hpp);
 //  3. smoothing: the free vertices of the tets still below the target or
 //     30 degrees, whichever is lower, in index order (inserted vertices
 //     are free).
@@ -23,6 +24,7 @@
 #include "check/quality.hpp"
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "optimize/collapse.hpp"
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/smoothing.hpp"
@@ -215,18 +217,26 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
   return moved;
 }
 
-// Step 2 of a pass; the number of vertices inserted.
-size_t insertion_pass(TetTopology& topo, double target, SmoothingScratch& scratch) {
-  size_t inserted = 0;
+// Step 2 of a pass: each tet below the insertion bar, worst first, gets a
+// vertex where that pays, else loses one (collapse_vertex) where that pays.
+void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, OptimizeStats& stats,
+                    SmoothingScratch& scratch, size_t& inserted, size_t& collapsed) {
+  inserted = collapsed = 0;
   const double bar = insertion_bar(target);
-  for (uint32_t t : tets_below(topo, bar))
-    if (topo.alive(t) && topo.quality(t) < bar) inserted += insert_vertex(topo, t, target, scratch);
-  return inserted;
+  for (uint32_t t : tets_below(topo, bar)) {
+    if (!topo.alive(t) || topo.quality(t) >= bar) continue;
+    if (insert_vertex(topo, t, target, scratch))
+      ++inserted;
+    else if (collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
+      ++collapsed;
+  }
+  stats.vertices_inserted += inserted;
+  stats.vertices_collapsed += collapsed;
 }
 
 // After the passes: the mesh's worst tet, while it is below the target,
-// gets the topology step, then an insertion, then its free vertices
-// smoothed, each kept only when the smallest dihedral angle of the tets it
+// gets the topology step, then an insertion, then a collapse, then its free
+// vertices smoothed, each kept only when the smallest dihedral angle of the tets it
 // changes does not drop and no more of them have one under 10 degrees
 // (min_angle_no_worse), until none of them changes anything or after `rounds`
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
@@ -253,6 +263,10 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
     }
     if (!changed && insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst)) {
       ++stats.vertices_inserted;
+      changed = true;
+    }
+    if (!changed && collapse_vertex(topo, worst, frozen, insertion_bar(target), InsertionRule::kWorstFirst)) {
+      ++stats.vertices_collapsed;
       changed = true;
     }
     if (!changed) {
@@ -308,14 +322,14 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       const size_t flips = topology_pass(topo, target, stats);
       stats.topology_seconds += part.wall();
       part = Stopwatch();
-      const size_t inserted = options.insert_vertices ? insertion_pass(topo, target, scratch) : 0;
+      size_t inserted = 0, collapsed = 0;
+      if (options.insert_vertices) insertion_pass(topo, target, fixed, stats, scratch, inserted, collapsed);
       stats.insertion_seconds += part.wall();
       part = Stopwatch();
       const size_t moved = smoothing_pass(topo, std::min(target, quality_of_angle(kSmoothingAngle)), fixed, scratch);
       stats.smoothing_seconds += part.wall();
-      stats.vertices_inserted += inserted;
       stats.vertices_moved += moved;
-      if (flips == 0 && inserted == 0 && moved == 0) break;
+      if (flips == 0 && inserted == 0 && collapsed == 0 && moved == 0) break;
     }
     if (options.multi_face_sweep) {
       part = Stopwatch();

@@ -2,7 +2,7 @@
 // untouched: passes of topological improvement (2-3 flips, and edge removal
 // with its 3-2 and 4-4 special cases, see flips.hpp) on the tets below the
 // quality target, worst first, then interior vertex insertion where it pays
-// (insertion.hpp), then optimization-based smoothing (smoothing.hpp) of the
+// (insertion.hpp), else vertex collapse where that pays (collapse.hpp), then optimization-based smoothing (smoothing.hpp) of the
 // free vertices of the tets still below the target or 30 degrees; after the passes, a
 // sweep of multi-face removals and two sweeps of radius-ratio relaxation
 // (relax_vertex), which moves no worst tet down and adds no sliver.
@@ -10,8 +10,10 @@
 // Frozen vertices never move: those of boundary faces (faces of exactly one
 // tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
 // a rank boundary shares). Boundary faces keep their three vertices and
-// their side. No vertex is removed: inserted vertices are appended to xyz
-// (and to global_ids when the mesh has them), so existing indices stay. Every change keeps every tet
+// their side. Inserted vertices are appended to xyz (and to global_ids
+// when the mesh has them) and collapsed ones (collapse.hpp) stay in xyz
+// with no tet, so existing indices stay; callers drop the unused ones
+// (drop_unused_vertices) when they need a compact mesh. Every change keeps every tet
 // positive by exact orient3d and strictly raises the worst quality of the
 // tets it replaces or moves (a relaxation keeps it and raises the radius
 // ratios); a pass has a bounded amount of work and there
@@ -49,6 +51,7 @@ struct OptimizeStats {
   size_t edge_removals = 0;  // edges with rings of 5 to 7 tets
   size_t multi_face_removals = 0;  // polygons of 2 to 5 sandwiched faces
   size_t vertices_inserted = 0;
+  size_t vertices_collapsed = 0;
   size_t vertices_moved = 0;
   size_t vertices_relaxed = 0;  // moves of the radius-ratio relaxation
   int passes = 0;  // passes run

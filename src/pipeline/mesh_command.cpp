@@ -600,6 +600,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           o.passes = options.optimize_passes;
           o.quality_target_deg = options.quality_target;
           OptimizeStats n = optimize_mesh(s.mesh, o);
+          drop_unused_vertices(s.mesh);
           ojson c;
           for (const auto& [when, q] : {std::pair{"before", n.before}, std::pair{"after", n.after}}) {
             const double tets = static_cast<double>(std::max<size_t>(q.tets, 1));
@@ -614,6 +615,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["edge removals"] = n.edge_removals;
           c["multi-face removals"] = n.multi_face_removals;
           c["vertices inserted"] = n.vertices_inserted;
+          c["vertices collapsed"] = n.vertices_collapsed;
           c["vertices moved"] = n.vertices_moved;
           c["vertices relaxed"] = n.vertices_relaxed;
           c["passes"] = n.passes;

@@ -1,0 +1,115 @@
+// Interior vertex collapse: a vertex crowding another inside a coned cube
+// is merged away, leaving the cube coned to one centre, every tet
+// positive, the boundary as it was and the collapsed vertex unused; frozen
+// vertices are never collapsed; optimize_mesh counts the collapses.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "check/validate.hpp"
+#include "core/compact_mesh.hpp"
+#include "optimize/collapse.hpp"
+#include "optimize/optimize.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize_test_util.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+using test::all_positive;
+using test::boundary_faces;
+using test::worst_quality;
+
+// The unit cube's 12 boundary triangles coned to its centre, vertex 8; then
+// tet 0 split at vertex 9, a hundredth of the way from the centre to the
+// centroid of tet 0's boundary face: four tets, three of them nearly flat.
+TetMesh crowded_cube() {
+  SurfaceMesh box = test::box_surface();
+  TetMesh m;
+  m.xyz = box.xyz;
+  m.xyz.insert(m.xyz.end(), {0.5, 0.5, 0.5});
+  m.tris = box.tris;
+  for (size_t t = 0; t < box.num_triangles(); ++t)
+    m.tets.insert(m.tets.end(), {box.tris[3 * t], box.tris[3 * t + 2], box.tris[3 * t + 1], 8});
+  const uint32_t split[4] = {m.tets[0], m.tets[1], m.tets[2], m.tets[3]};
+  double at[3];
+  for (int i = 0; i < 3; ++i)
+    at[i] = 0.99 * 0.5 + 0.01 * (m.point(split[0])[i] + m.point(split[1])[i] + m.point(split[2])[i]) / 3;
+  m.xyz.insert(m.xyz.end(), at, at + 3);
+  m.tets.erase(m.tets.begin(), m.tets.begin() + 4);
+  for (int k = 0; k < 4; ++k) {
+    uint32_t tet[4] = {split[0], split[1], split[2], split[3]};
+    tet[k] = 9;
+    m.tets.insert(m.tets.end(), tet, tet + 4);
+  }
+  return m;
+}
+
+uint32_t worst_slot(const TetTopology& topo) {
+  uint32_t worst = 0;
+  for (uint32_t t = 1; t < topo.slots(); ++t)
+    if (topo.quality(t) < topo.quality(worst)) worst = t;
+  return worst;
+}
+
+TEST(Collapse, MergesACrowdingVertexAndLeavesItUnused) {
+  TetMesh m = crowded_cube();
+  ASSERT_TRUE(all_positive(m));
+  ASSERT_EQ(m.num_tets(), 15u);
+  const auto boundary = boundary_faces(m);
+  const double before = worst_quality(m);
+  std::vector<uint8_t> frozen(10, 1);
+  frozen[8] = frozen[9] = 0;
+  TetTopology topo(m);
+  const double bar = insertion_bar(quality_of_angle(40));
+  ASSERT_TRUE(collapse_vertex(topo, worst_slot(topo), frozen, bar, InsertionRule::kShortfall));
+  topo.compact();
+  EXPECT_EQ(m.num_tets(), 12u);
+  EXPECT_TRUE(all_positive(m));
+  EXPECT_EQ(boundary_faces(m), boundary);
+  EXPECT_GT(worst_quality(m), before);
+  // The centre stays (its cone is the better one) and vertex 9 is unused.
+  EXPECT_EQ(std::count(m.tets.begin(), m.tets.end(), 9u), 0);
+  EXPECT_EQ(std::count(m.tets.begin(), m.tets.end(), 8u), 12);
+  EXPECT_EQ(drop_unused_vertices(m), 1u);
+  ValidationResult r = validate_mesh(m, nullptr);
+  EXPECT_TRUE(r.valid) << format_text(r);
+  EXPECT_EQ(r.warnings.size(), 0u) << format_text(r);
+}
+
+TEST(Collapse, FrozenAndBoundaryVerticesStay) {
+  TetMesh m = crowded_cube();
+  const TetMesh original = m;
+  std::vector<uint8_t> frozen(10, 1);  // every vertex
+  TetTopology topo(m);
+  const double bar = insertion_bar(quality_of_angle(40));
+  EXPECT_FALSE(collapse_vertex(topo, worst_slot(topo), frozen, bar, InsertionRule::kWorstFirst));
+  // With no flags at all, no vertex on an open face is collapsed: here the
+  // centre's 11 cone tets alone, with the split tet's place left open.
+  std::vector<uint8_t> none;
+  TetMesh opened = original;
+  opened.tets.resize(4 * 11);
+  TetTopology open(opened);
+  for (uint32_t t = 0; t < open.slots(); ++t)
+    EXPECT_FALSE(collapse_vertex(open, t, none, bar, InsertionRule::kShortfall));
+  topo.compact();
+  EXPECT_EQ(m.tets, original.tets);
+}
+
+TEST(Collapse, OptimizeMeshCountsCollapsesAndKeepsTheMeshValid) {
+  TetMesh m = crowded_cube();
+  const auto boundary = boundary_faces(m);
+  OptimizeStats stats = optimize_mesh(m, OptimizeOptions{});
+  EXPECT_GE(stats.vertices_collapsed, 1u);
+  EXPECT_TRUE(all_positive(m));
+  EXPECT_EQ(boundary_faces(m), boundary);
+  EXPECT_GT(stats.after.min_dihedral_deg, stats.before.min_dihedral_deg);
+  drop_unused_vertices(m);
+  ValidationResult r = validate_mesh(m, nullptr);
+  EXPECT_TRUE(r.valid) << format_text(r);
+}
+
+}  // namespace
+}  // namespace partet
