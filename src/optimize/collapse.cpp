@@ -22,16 +22,6 @@ struct Collapse {
   std::vector<uint32_t> quads;  // the new tets
 };
 
-// v's star is closed: every face through v has a tet behind it.
-bool closed_star(const TetTopology& topo, uint32_t v, const std::vector<uint32_t>& star) {
-  for (uint32_t s : star) {
-    const int lv = local_index(topo.tet(s), v);
-    for (int f = 0; f < 4; ++f)
-      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& frozen, double bar,
@@ -44,7 +34,7 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   for (uint32_t v : corners) {
     if (v >= frozen.size() || frozen[v]) continue;
     topo.vertex_star(v, star);
-    if (!closed_star(topo, v, star)) continue;
+    if (on_open_face(topo, v, star)) continue;
     double old_quality = std::numeric_limits<double>::infinity(), old_deficit = 0;
     int old_slivers = 0;
     neighbours.clear();

@@ -139,16 +139,6 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
   return faces;
 }
 
-// Some tet of `star` (v's star) has a face through v with no tet behind it.
-bool on_open_face(const TetTopology& topo, uint32_t v, const std::vector<uint32_t>& star) {
-  for (uint32_t s : star) {
-    const int lv = local_index(topo.tet(s), v);
-    for (int f = 0; f < 4; ++f)
-      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets) {

@@ -111,4 +111,15 @@ inline int local_index(const uint32_t* tet, uint32_t v) {
   return -1;
 }
 
+// Some tet of `star` (v's star, vertex_star) has a face through v with no
+// tet behind it: v is on the boundary and its link is not closed.
+inline bool on_open_face(const TetTopology& topo, uint32_t v, std::span<const uint32_t> star) {
+  for (uint32_t s : star) {
+    const int lv = local_index(topo.tet(s), v);
+    for (int f = 0; f < 4; ++f)
+      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return true;
+  }
+  return false;
+}
+
 }  // namespace partet
