@@ -236,7 +236,9 @@ void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>
 
 // After the passes: the mesh's worst tet, while it is below the target,
 // gets the topology step, then an insertion, then a collapse, then its free
-// vertices smoothed, each kept only when the smallest dihedral angle of the tets it
+// vertices smoothed, then (when none moves) the free vertices around them
+// smoothed before them again, which counts only when the worst tet gains;
+// each change is kept only when the smallest dihedral angle of the tets it
 // changes does not drop and no more of them have one under 10 degrees
 // (min_angle_no_worse), until none of them changes anything or after `rounds`
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
@@ -244,7 +246,21 @@ void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>
 // tets of 35.3 degrees become twelve of 45 around a centre vertex).
 void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::vector<uint8_t>& frozen,
                       OptimizeStats& stats, SmoothingScratch& scratch) {
-  std::vector<uint32_t> created, before, star;
+  std::vector<uint32_t> created, before, star, neighbours;
+  // Smooths free vertex v, kept only when its star's angles get no worse.
+  const auto guarded_smooth = [&](uint32_t v) {
+    const double old_position[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
+    topo.vertex_star(v, scratch.star);
+    topo.tet_vertices(scratch.star, star);
+    const AngleSummary old_angles = summarize_angles(topo, star);
+    if (!smooth_vertex(topo, v, scratch)) return false;
+    if (summarize_angles(topo, star).no_worse_than(old_angles)) {
+      ++stats.vertices_moved;
+      return true;
+    }
+    topo.move_vertex(v, old_position);
+    return false;
+  };
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     for (uint32_t t = 0; t < topo.slots(); ++t)
@@ -272,19 +288,29 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
     if (!changed) {
       uint32_t corners[4];
       std::copy_n(topo.tet(worst), 4, corners);
-      for (uint32_t v : corners) {
-        if (v < frozen.size() && frozen[v]) continue;
-        const double old_position[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
-        topo.vertex_star(v, scratch.star);
-        topo.tet_vertices(scratch.star, star);
-        const AngleSummary old_angles = summarize_angles(topo, star);
-        if (!smooth_vertex(topo, v, scratch)) continue;
-        if (summarize_angles(topo, star).no_worse_than(old_angles)) {
-          ++stats.vertices_moved;
-          changed = true;
-        } else {
-          topo.move_vertex(v, old_position);
+      for (uint32_t v : corners)
+        if (!(v < frozen.size() && frozen[v]) && guarded_smooth(v)) changed = true;
+      if (!changed) {
+        // The free corners sit where their stars' worst tets balance:
+        // their free neighbours, moved first, may give them room.
+        const double stuck = topo.quality(worst);
+        neighbours.clear();
+        for (uint32_t v : corners) {
+          if (v < frozen.size() && frozen[v]) continue;
+          topo.vertex_star(v, scratch.star);
+          for (uint32_t s : scratch.star)
+            for (int k = 0; k < 4; ++k) neighbours.push_back(topo.tet(s)[k]);
         }
+        std::sort(neighbours.begin(), neighbours.end());
+        neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+        bool moved = false;
+        for (uint32_t u : neighbours)
+          if (std::find(corners, corners + 4, u) == corners + 4 && !(u < frozen.size() && frozen[u]))
+            moved = guarded_smooth(u) || moved;
+        if (moved)
+          for (uint32_t v : corners)
+            if (!(v < frozen.size() && frozen[v])) guarded_smooth(v);
+        changed = topo.quality(worst) > stuck;
       }
     }
     if (!changed) break;
