@@ -219,15 +219,15 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
 
 // Step 2 of a pass: each tet below the insertion bar, worst first, gets a
 // vertex where that pays, else loses one (collapse_vertex) where that pays.
-void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, OptimizeStats& stats,
-                    SmoothingScratch& scratch, size_t& inserted, size_t& collapsed) {
+void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
+                    OptimizeStats& stats, SmoothingScratch& scratch, size_t& inserted, size_t& collapsed) {
   inserted = collapsed = 0;
   const double bar = insertion_bar(target);
   for (uint32_t t : tets_below(topo, bar)) {
     if (!topo.alive(t) || topo.quality(t) >= bar) continue;
     if (insert_vertex(topo, t, target, scratch))
       ++inserted;
-    else if (collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
+    else if (collapse && collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
       ++collapsed;
   }
   stats.vertices_inserted += inserted;
@@ -244,8 +244,8 @@ void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
 // smallest angle could stay where a vertex would lift it: the cube's six
 // tets of 35.3 degrees become twelve of 45 around a centre vertex).
-void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::vector<uint8_t>& frozen,
-                      OptimizeStats& stats, SmoothingScratch& scratch) {
+void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& options,
+                      const std::vector<uint8_t>& frozen, OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star, neighbours;
   // Smooths free vertex v, kept only when its star's angles get no worse.
   const auto guarded_smooth = [&](uint32_t v) {
@@ -261,7 +261,7 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
     topo.move_vertex(v, old_position);
     return false;
   };
-  for (int round = 0; round < rounds; ++round) {
+  for (int round = 0; round < options.worst_tet_rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     for (uint32_t t = 0; t < topo.slots(); ++t)
       if (topo.alive(t) && (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst))) worst = t;
@@ -281,7 +281,8 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
       ++stats.vertices_inserted;
       changed = true;
     }
-    if (!changed && collapse_vertex(topo, worst, frozen, insertion_bar(target), InsertionRule::kWorstFirst)) {
+    if (!changed && options.collapse_vertices &&
+        collapse_vertex(topo, worst, frozen, insertion_bar(target), InsertionRule::kWorstFirst)) {
       ++stats.vertices_collapsed;
       changed = true;
     }
@@ -290,7 +291,7 @@ void worst_tet_rounds(TetTopology& topo, double target, int rounds, const std::v
       std::copy_n(topo.tet(worst), 4, corners);
       for (uint32_t v : corners)
         if (!(v < frozen.size() && frozen[v]) && guarded_smooth(v)) changed = true;
-      if (!changed) {
+      if (!changed && options.smooth_around_worst) {
         // The free corners sit where their stars' worst tets balance:
         // their free neighbours, moved first, may give them room.
         const double stuck = topo.quality(worst);
@@ -349,7 +350,8 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       stats.topology_seconds += part.wall();
       part = Stopwatch();
       size_t inserted = 0, collapsed = 0;
-      if (options.insert_vertices) insertion_pass(topo, target, fixed, stats, scratch, inserted, collapsed);
+      if (options.insert_vertices)
+        insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch, inserted, collapsed);
       stats.insertion_seconds += part.wall();
       part = Stopwatch();
       const size_t moved = smoothing_pass(topo, std::min(target, quality_of_angle(kSmoothingAngle)), fixed, scratch);
@@ -363,7 +365,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       stats.topology_seconds += part.wall();
     }
     part = Stopwatch();
-    worst_tet_rounds(topo, target, options.worst_tet_rounds, fixed, stats, scratch);
+    worst_tet_rounds(topo, target, options, fixed, stats, scratch);
     stats.insertion_seconds += part.wall();
     part = Stopwatch();
     std::vector<uint8_t> settled;

@@ -36,6 +36,10 @@ struct OptimizeOptions {
   // are left as they are; the optimizer works on the others.
   double quality_target_deg = 40;
   bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
+  bool collapse_vertices = true;  // leaves collapsed vertices unused in xyz
+  // In the worst-tet rounds, when nothing else moves the worst tet, smooth
+  // the free vertices around its own first.
+  bool smooth_around_worst = true;
   bool multi_face_sweep = true;  // multi-face removals after the passes
   int relaxation_sweeps = 2;     // radius-ratio relaxation sweeps at the end
   // Rounds on the mesh's worst tet after the passes (flip, insert, smooth
