@@ -218,20 +218,20 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
 }
 
 // Step 2 of a pass: each tet below the insertion bar, worst first, gets a
-// vertex where that pays, else loses one (collapse_vertex) where that pays.
-void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
-                    OptimizeStats& stats, SmoothingScratch& scratch, size_t& inserted, size_t& collapsed) {
-  inserted = collapsed = 0;
+// vertex where that pays, else loses one (collapse_vertex) where that pays;
+// the number of vertices inserted or collapsed.
+size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
+                      OptimizeStats& stats, SmoothingScratch& scratch) {
+  const size_t before = stats.vertices_inserted + stats.vertices_collapsed;
   const double bar = insertion_bar(target);
   for (uint32_t t : tets_below(topo, bar)) {
     if (!topo.alive(t) || topo.quality(t) >= bar) continue;
     if (insert_vertex(topo, t, target, scratch))
-      ++inserted;
+      ++stats.vertices_inserted;
     else if (collapse && collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
-      ++collapsed;
+      ++stats.vertices_collapsed;
   }
-  stats.vertices_inserted += inserted;
-  stats.vertices_collapsed += collapsed;
+  return stats.vertices_inserted + stats.vertices_collapsed - before;
 }
 
 // After the passes: the mesh's worst tet, while it is below the target,
@@ -247,6 +247,7 @@ void insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>
 void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& options,
                       const std::vector<uint8_t>& frozen, OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star, neighbours;
+  const auto free_vertex = [&](uint32_t v) { return !(v < frozen.size() && frozen[v]); };
   // Smooths free vertex v, kept only when its star's angles get no worse.
   const auto guarded_smooth = [&](uint32_t v) {
     const double old_position[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
@@ -290,14 +291,14 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
       uint32_t corners[4];
       std::copy_n(topo.tet(worst), 4, corners);
       for (uint32_t v : corners)
-        if (!(v < frozen.size() && frozen[v]) && guarded_smooth(v)) changed = true;
+        if (free_vertex(v) && guarded_smooth(v)) changed = true;
       if (!changed && options.smooth_around_worst) {
         // The free corners sit where their stars' worst tets balance:
         // their free neighbours, moved first, may give them room.
         const double stuck = topo.quality(worst);
         neighbours.clear();
         for (uint32_t v : corners) {
-          if (v < frozen.size() && frozen[v]) continue;
+          if (!free_vertex(v)) continue;
           topo.vertex_star(v, scratch.star);
           for (uint32_t s : scratch.star)
             for (int k = 0; k < 4; ++k) neighbours.push_back(topo.tet(s)[k]);
@@ -306,11 +307,10 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
         neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
         bool moved = false;
         for (uint32_t u : neighbours)
-          if (std::find(corners, corners + 4, u) == corners + 4 && !(u < frozen.size() && frozen[u]))
-            moved = guarded_smooth(u) || moved;
+          if (std::find(corners, corners + 4, u) == corners + 4 && free_vertex(u)) moved = guarded_smooth(u) || moved;
         if (moved)
           for (uint32_t v : corners)
-            if (!(v < frozen.size() && frozen[v])) guarded_smooth(v);
+            if (free_vertex(v)) guarded_smooth(v);
         changed = topo.quality(worst) > stuck;
       }
     }
@@ -349,15 +349,14 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       const size_t flips = topology_pass(topo, target, stats);
       stats.topology_seconds += part.wall();
       part = Stopwatch();
-      size_t inserted = 0, collapsed = 0;
-      if (options.insert_vertices)
-        insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch, inserted, collapsed);
+      const size_t inserted =
+          options.insert_vertices ? insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch) : 0;
       stats.insertion_seconds += part.wall();
       part = Stopwatch();
       const size_t moved = smoothing_pass(topo, std::min(target, quality_of_angle(kSmoothingAngle)), fixed, scratch);
       stats.smoothing_seconds += part.wall();
       stats.vertices_moved += moved;
-      if (flips == 0 && inserted == 0 && collapsed == 0 && moved == 0) break;
+      if (flips == 0 && inserted == 0 && moved == 0) break;
     }
     if (options.multi_face_sweep) {
       part = Stopwatch();
