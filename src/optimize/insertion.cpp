@@ -188,6 +188,19 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
       if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule)) return true;
     }
+    // For the mesh's worst tet, the tet's other edges whose rings close.
+    if (rule == InsertionRule::kWorstFirst) {
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          if ((i == k && j == l) || (i == l && j == k)) continue;
+          if (!topo.edge_ring(t, i, j, ring)) continue;
+          const double* a = topo.point(ring.a);
+          const double* b = topo.point(ring.b);
+          const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+          if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule))
+            return true;
+        }
+    }
     // The tets around t's vertices: a kernel with room for a good vertex.
     // A vertex of t off the boundary has its whole star in that cavity, on
     // none of its outer faces: it would vanish, and the cavity is not used.

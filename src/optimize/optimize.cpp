@@ -278,7 +278,8 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
         changed = true;
       }
     }
-    if (!changed && insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst)) {
+    if (!changed && options.insert_vertices &&
+        insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst)) {
       ++stats.vertices_inserted;
       changed = true;
     }
