@@ -139,6 +139,16 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
   return faces;
 }
 
+// Inserts a vertex at the midpoint of the edge whose closed ring is `ring`,
+// into the ring's tets, if that pays (try_cavity).
+bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, SmoothingScratch& scratch,
+                InsertionRule rule) {
+  const double* a = topo.point(ring.a);
+  const double* b = topo.point(ring.b);
+  const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+  return try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule);
+}
+
 }  // namespace
 
 AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets) {
@@ -182,23 +192,14 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     int k = 0, l = 1;
     TetTopology::Ring ring;
     if (widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
-        topo.edge_ring(t, k, l, ring)) {
-      const double* a = topo.point(ring.a);
-      const double* b = topo.point(ring.b);
-      const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-      if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule)) return true;
-    }
+        topo.edge_ring(t, k, l, ring) && split_edge(topo, ring, bar, scratch, rule))
+      return true;
     // For the mesh's worst tet, the tet's other edges whose rings close.
     if (rule == InsertionRule::kWorstFirst) {
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
           if ((i == k && j == l) || (i == l && j == k)) continue;
-          if (!topo.edge_ring(t, i, j, ring)) continue;
-          const double* a = topo.point(ring.a);
-          const double* b = topo.point(ring.b);
-          const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-          if (try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule))
-            return true;
+          if (topo.edge_ring(t, i, j, ring) && split_edge(topo, ring, bar, scratch, rule)) return true;
         }
     }
     // The tets around t's vertices: a kernel with room for a good vertex.
