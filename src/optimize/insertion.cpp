@@ -146,7 +146,13 @@ bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, Sm
   const double* a = topo.point(ring.a);
   const double* b = topo.point(ring.b);
   const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  return try_cavity(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule);
+  const std::vector<uint32_t> cavity(ring.tets, ring.tets + ring.n);
+  if (try_cavity(topo, cavity, middle, bar, scratch, rule)) return true;
+  // The ring of a flat tet's edge is flat on that side too: the midpoint
+  // (rounded) may see a face of it from behind, the kernel's deepest point
+  // sees them all.
+  const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
+  return kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true);
 }
 
 }  // namespace
@@ -191,11 +197,13 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     const uint32_t* u = topo.tet(t);
     int k = 0, l = 1;
     TetTopology::Ring ring;
+    bool widest_closes = false;
     if (widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
-        topo.edge_ring(t, k, l, ring) && split_edge(topo, ring, bar, scratch, rule))
+        (widest_closes = topo.edge_ring(t, k, l, ring)) && split_edge(topo, ring, bar, scratch, rule))
       return true;
-    // For the mesh's worst tet, the tet's other edges whose rings close.
-    if (rule == InsertionRule::kWorstFirst) {
+    // For the mesh's worst tet, or a sliver whose widest angle sits on a
+    // surface edge (a flat ear), the tet's other edges whose rings close.
+    if (rule == InsertionRule::kWorstFirst || (!widest_closes && topo.quality(t) < quality_of_angle(kSliverAngle))) {
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
           if ((i == k && j == l) || (i == l && j == k)) continue;
