@@ -163,6 +163,7 @@ void Front::list_face(uint32_t f, bool stamp) {
   query_.leaves_in_range(glo, ghi, leaves_scratch_);
   double root_hi[3];
   for (int k = 0; k < 3; ++k) root_hi[k] = root_.origin[k] + root_.edge();
+  const TriangleBoxTest triangle(point(a), point(b), point(c));
   for (size_t leaf : leaves_scratch_) {
     const bool vertex_leaf = leaf == vertex_leaf_[a] || leaf == vertex_leaf_[b] || leaf == vertex_leaf_[c];
     if (!vertex_leaf) {
@@ -170,7 +171,7 @@ void Front::list_face(uint32_t f, bool stamp) {
       query_.leaf_box(root_, leaf, leaf_lo, leaf_hi);
       const bool open[3] = {!closed_lists_ && leaf_hi[0] < root_hi[0], !closed_lists_ && leaf_hi[1] < root_hi[1],
                             !closed_lists_ && leaf_hi[2] < root_hi[2]};
-      if (!box_meets_triangle_half_open(leaf_lo, leaf_hi, open, point(a), point(b), point(c))) continue;
+      if (!triangle.meets_half_open(leaf_lo, leaf_hi, open)) continue;
     }
     uint32_t e;
     if (free_entry_ != kNoIndex) {

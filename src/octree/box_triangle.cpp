@@ -177,25 +177,18 @@ double segment_segment_dist2(const double* p1, const double* q1, const double* p
 // product); 2^-40 leaves a wide margin. Magnitudes where a product could
 // underflow or overflow and break those relative bounds are left to the
 // exact test.
-int separation_filter(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
-  double m = 0, d = 0;
-  const double* v[3] = {a, b, c};
-  double e[3][3];  // e[k] = v[k + 1] - v[k]
-  for (int k = 0; k < 3; ++k) {
-    sub(v[(k + 1) % 3], v[k], e[k]);
-    for (int i = 0; i < 3; ++i) {
-      m = std::max({m, std::fabs(v[k][i]), std::fabs(lo[i]), std::fabs(hi[i])});
-      d = std::max(d, std::fabs(e[k][i]));
-    }
-  }
+int separation_filter(const double* lo, const double* hi, const TriangleBoxTest::Parts& t) {
+  const double* a = t.v[0];
+  const double* const* v = t.v;
+  const double (*e)[3] = t.e;
+  double m = t.m;
+  for (int i = 0; i < 3; ++i) m = std::max({m, std::fabs(lo[i]), std::fabs(hi[i])});
+  const double d = t.d;
   if (d < 0x1p-500 || m > 0x1p500) return 0;
   bool meets = true;
   // Box axes: strict overlap (the bounding-box test has already rejected
   // the disjoint cases).
-  for (int i = 0; i < 3; ++i) {
-    const double tlo = std::min({a[i], b[i], c[i]}), thi = std::max({a[i], b[i], c[i]});
-    meets = meets && thi > lo[i] && tlo < hi[i];
-  }
+  for (int i = 0; i < 3; ++i) meets = meets && t.thi[i] > lo[i] && t.tlo[i] < hi[i];
   double centre[3], half[3], dc[3];
   for (int i = 0; i < 3; ++i) {
     centre[i] = 0.5 * (lo[i] + hi[i]);
@@ -204,10 +197,7 @@ int separation_filter(const double* lo, const double* hi, const double* a, const
   }
   // The plane normal: the box's projection is centred at n.(centre - a)
   // with radius sum |n_i| half_i; the triangle projects to 0.
-  double n[3];
-  n[0] = e[0][1] * (-e[2][2]) - e[0][2] * (-e[2][1]);
-  n[1] = e[0][2] * (-e[2][0]) - e[0][0] * (-e[2][2]);
-  n[2] = e[0][0] * (-e[2][1]) - e[0][1] * (-e[2][0]);
+  const double* n = t.n;
   const double plane_error = 0x1p-40 * m * d * d;
   const double offset = std::fabs(dot(n, dc));
   const double radius = std::fabs(n[0]) * half[0] + std::fabs(n[1]) * half[1] + std::fabs(n[2]) * half[2];
@@ -244,14 +234,12 @@ int separation_filter(const double* lo, const double* hi, const double* a, const
 // eps, so a test reads the constant term and, where it is zero, the sign
 // of the eps term: upper bounds become strict, and a corner predicate that
 // is zero decides by which of its coordinates take a pulled-in hi.
-bool box_meets_triangle_impl(const double* lo, const double* hi, const bool* open, const double* a,
-                             const double* b, const double* c) {
-  for (int i = 0; i < 3; ++i) {
-    const double tlo = std::min({a[i], b[i], c[i]});
-    if (std::max({a[i], b[i], c[i]}) < lo[i] || tlo > hi[i] || (open && open[i] && tlo == hi[i])) return false;
-  }
+bool box_meets_triangle_impl(const double* lo, const double* hi, const bool* open, const TriangleBoxTest::Parts& t) {
+  for (int i = 0; i < 3; ++i)
+    if (t.thi[i] < lo[i] || t.tlo[i] > hi[i] || (open && open[i] && t.tlo[i] == hi[i])) return false;
+  const double *a = t.v[0], *b = t.v[1], *c = t.v[2];
   if (point_in_box(a, lo, hi, open) || point_in_box(b, lo, hi, open) || point_in_box(c, lo, hi, open)) return true;
-  const int filtered = separation_filter(lo, hi, a, b, c);
+  const int filtered = separation_filter(lo, hi, t);
   if (filtered != 0) return filtered > 0;
   double corner[8][3];
   box_corners(lo, hi, corner);
@@ -295,13 +283,43 @@ bool box_meets_triangle_impl(const double* lo, const double* hi, const bool* ope
 
 }  // namespace
 
+TriangleBoxTest::TriangleBoxTest(const double* a, const double* b, const double* c) {
+  parts_.v[0] = a;
+  parts_.v[1] = b;
+  parts_.v[2] = c;
+  parts_.m = parts_.d = 0;
+  for (int k = 0; k < 3; ++k) {
+    sub(parts_.v[(k + 1) % 3], parts_.v[k], parts_.e[k]);
+    for (int i = 0; i < 3; ++i) {
+      parts_.m = std::max(parts_.m, std::fabs(parts_.v[k][i]));
+      parts_.d = std::max(parts_.d, std::fabs(parts_.e[k][i]));
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    parts_.tlo[i] = std::min({a[i], b[i], c[i]});
+    parts_.thi[i] = std::max({a[i], b[i], c[i]});
+  }
+  const double(*e)[3] = parts_.e;
+  parts_.n[0] = e[0][1] * (-e[2][2]) - e[0][2] * (-e[2][1]);
+  parts_.n[1] = e[0][2] * (-e[2][0]) - e[0][0] * (-e[2][2]);
+  parts_.n[2] = e[0][0] * (-e[2][1]) - e[0][1] * (-e[2][0]);
+}
+
+bool TriangleBoxTest::meets(const double* lo, const double* hi) const {
+  return box_meets_triangle_impl(lo, hi, nullptr, parts_);
+}
+
+bool TriangleBoxTest::meets_half_open(const double* lo, const double* hi, const bool* open) const {
+  return box_meets_triangle_impl(lo, hi, open, parts_);
+}
+
 bool box_meets_triangle(const double* lo, const double* hi, const double* a, const double* b, const double* c) {
-  return box_meets_triangle_impl(lo, hi, nullptr, a, b, c);
+  return TriangleBoxTest(a, b, c).meets(lo, hi);
 }
 
 bool box_meets_triangle_half_open(const double* lo, const double* hi, const bool* open, const double* a,
                                   const double* b, const double* c) {
-  return box_meets_triangle_impl(lo, hi, open, a, b, c);
+  return TriangleBoxTest(a, b, c).meets_half_open(lo, hi, open);
 }
 
 bool box_triangle_closer_than(const double* lo, const double* hi, const double* a, const double* b,

@@ -37,6 +37,29 @@ bool box_meets_triangle(const double* lo, const double* hi, const double* a, con
 bool box_meets_triangle_half_open(const double* lo, const double* hi, const bool* open, const double* a,
                                   const double* b, const double* c);
 
+// One triangle against many boxes (the leaves a triangle's bounding box
+// covers): the same answers as the two functions above, with the
+// triangle's share of the work (bounding box, edges, normal, magnitudes
+// for the filter's error bounds) done once. The points must outlive it.
+class TriangleBoxTest {
+ public:
+  TriangleBoxTest(const double* a, const double* b, const double* c);
+  bool meets(const double* lo, const double* hi) const;
+  bool meets_half_open(const double* lo, const double* hi, const bool* open) const;
+
+  struct Parts {
+    const double* v[3];
+    double e[3][3];  // e[k] = v[k + 1] - v[k]
+    double n[3];     // e[0] x -e[2]
+    double tlo[3], thi[3];
+    double m;  // largest coordinate magnitude of the triangle
+    double d;  // largest edge component magnitude
+  };
+
+ private:
+  Parts parts_;
+};
+
 // Euclidean distance between closed box [lo, hi] and triangle abc is below
 // r, in floating point (a heuristic, not exact). Precondition: the box and
 // the triangle are disjoint; the distance is then realised by a triangle

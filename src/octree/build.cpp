@@ -109,6 +109,7 @@ void refine_along_triangles(LinearOctree& tree, const SurfaceMesh& s, const Root
     const double* c = s.point(v[2]);
     const int want = std::min({vertex_level[v[0]], vertex_level[v[1]], vertex_level[v[2]]});
     leaves_over_triangle_box(query, root, a, b, c, leaves);
+    const TriangleBoxTest triangle(a, b, c);
     for (size_t leaf : leaves) {
       if (tree.level[leaf] >= want || (owner >= 0 && tree.owner[leaf] != owner)) continue;
       uint32_t x, y, z;
@@ -119,7 +120,7 @@ void refine_along_triangles(LinearOctree& tree, const SurfaceMesh& s, const Root
         stack.pop_back();
         double blo[3], bhi[3];
         octant_box(root, o.x, o.y, o.z, o.level, blo, bhi);
-        if (!box_meets_triangle(blo, bhi, a, b, c)) continue;
+        if (!triangle.meets(blo, bhi)) continue;
         if (o.level == want) {
           requests.push_back({morton_key(o.x, o.y, o.z), static_cast<uint8_t>(want)});
           continue;

@@ -44,10 +44,11 @@ LeafTriangles bin_triangles(const LinearOctree& tree, const SurfaceMesh& s, cons
     const double* b = s.point(v[1]);
     const double* c = s.point(v[2]);
     leaves_over_triangle_box(query, root, a, b, c, leaves);
+    const TriangleBoxTest triangle(a, b, c);
     for (size_t leaf : leaves) {
       double blo[3], bhi[3];
       query.leaf_box(root, leaf, blo, bhi);
-      if (!box_meets_triangle(blo, bhi, a, b, c)) continue;
+      if (!triangle.meets(blo, bhi)) continue;
       pair_leaf.push_back(static_cast<uint32_t>(leaf));
       pair_tri.push_back(t);
       bins.coarsest[t] = std::min(bins.coarsest[t], tree.level[leaf]);

@@ -198,6 +198,34 @@ TEST(OctreeBoxTriangle, HalfOpenMatchesShrunkClosedBoxOnLatticeTriangles) {
   EXPECT_GT(differ, total / 50);
 }
 
+// One TriangleBoxTest against many boxes (its precomputed edges, normal and
+// magnitudes reused) answers as the per-box functions, on lattice
+// triangles against lattice boxes of every size, closed and half-open.
+TEST(OctreeBoxTriangle, OneTriangleManyBoxesMatchesPerBoxTests) {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> cell(-4, 7), size(1, 6), coin(0, 1);
+  int met = 0;
+  for (int k = 0; k < 2000; ++k) {
+    double v[3][3];
+    if (!lattice_triangle(rng, v)) continue;
+    const TriangleBoxTest triangle(v[0], v[1], v[2]);
+    for (int b = 0; b < 20; ++b) {
+      double lo[3], hi[3];
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = cell(rng) / 4.0;
+        hi[i] = lo[i] + size(rng) / 8.0;
+      }
+      const bool open[3] = {coin(rng) == 1, coin(rng) == 1, coin(rng) == 1};
+      ASSERT_EQ(triangle.meets(lo, hi), box_meets_triangle(lo, hi, v[0], v[1], v[2])) << k << " " << b;
+      ASSERT_EQ(triangle.meets_half_open(lo, hi, open), box_meets_triangle_half_open(lo, hi, open, v[0], v[1], v[2]))
+          << k << " " << b;
+      ASSERT_EQ(triangle.meets(lo, hi), reference_meets(lo, hi, v[0], v[1], v[2])) << k << " " << b;
+      met += triangle.meets(lo, hi);
+    }
+  }
+  EXPECT_GT(met, 1000);
+}
+
 // The 8 half-open octants of a cube tile it, so a triangle meets exactly
 // the octants its points fall in, where closed octants also count every
 // touch of a common plane, edge or corner.
