@@ -22,6 +22,9 @@ constexpr double kShortfallAngle = 20;
 // A tet with an angle under this many degrees counts as a sliver: replacing
 // one by tets all above it pays even when the shortfall grows.
 constexpr double kSliverAngle = 10;
+// The mesh's worst tet with an angle under this many degrees is all but
+// flat: lifting it pays even when more of the new tets are slivers.
+constexpr double kDegenerateAngle = 1;
 
 // `items` sorted, duplicates dropped: membership by binary search (a
 // cavity around a tet's four vertices has about 70 tets).
@@ -107,11 +110,13 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   // Kept when the worst tet improves and either the shortfall does not grow
   // or a tet under 10 degrees gives way to tets all above (kShortfall), or
   // the smallest dihedral angle does not drop and the tets with one under
-  // 10 degrees do not grow in number (kWorstFirst).
+  // 10 degrees do not grow in number, or the worst tet was under
+  // kDegenerateAngle (kWorstFirst).
   const double ten = quality_of_angle(kSliverAngle);
   const bool pays = rule == InsertionRule::kShortfall
                         ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
-                        : new_angles_no_worse(topo, old_tets, created);
+                        : old_quality < quality_of_angle(kDegenerateAngle) ||
+                              new_angles_no_worse(topo, old_tets, created);
   if (new_quality > old_quality && pays) return true;
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);
