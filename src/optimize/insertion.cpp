@@ -144,20 +144,26 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
   return faces;
 }
 
+// try_cavity at p, else at the deepest point of the cavity's kernel: a
+// point near a flat tet's plane (its centroid, the rounded midpoint of an
+// edge of a flat ring) may see some of the cavity's outer faces from
+// behind, the kernel's deepest point sees them all.
+bool try_point_then_kernel(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
+                           SmoothingScratch& scratch, InsertionRule rule) {
+  if (try_cavity(topo, cavity, p, bar, scratch, rule)) return true;
+  const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
+  return kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true);
+}
+
 // Inserts a vertex at the midpoint of the edge whose closed ring is `ring`,
-// into the ring's tets, if that pays (try_cavity).
+// or at the ring's kernel point, into the ring's tets, if that pays.
 bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, SmoothingScratch& scratch,
                 InsertionRule rule) {
   const double* a = topo.point(ring.a);
   const double* b = topo.point(ring.b);
   const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  const std::vector<uint32_t> cavity(ring.tets, ring.tets + ring.n);
-  if (try_cavity(topo, cavity, middle, bar, scratch, rule)) return true;
-  // The ring of a flat tet's edge is flat on that side too: the midpoint
-  // (rounded) may see a face of it from behind, the kernel's deepest point
-  // sees them all.
-  const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
-  return kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true);
+  return try_point_then_kernel(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch,
+                               rule);
 }
 
 }  // namespace
@@ -191,21 +197,16 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
   for (int f = 0; f < 4; ++f)
     if (topo.twin(4 * t + f) != TetTopology::kNone) cavity.push_back(topo.twin(4 * t + f) / 4);
   if (cavity.size() > 1) {
-    if (try_cavity(topo, cavity, centroid, bar, scratch, rule)) return true;
-    // The centroid of a flat tet lies near its plane, where the cavity's
-    // faces on the far side (e.g. boundary faces) cannot see it: the
-    // deepest point of the cavity's kernel can.
-    const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
-    if (kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true)) return true;
+    if (try_point_then_kernel(topo, cavity, centroid, bar, scratch, rule)) return true;
     // An edge split (step 3 of insertion.hpp).
     // (The trials above may have grown the tet array: t's vertices are read again.)
     const uint32_t* u = topo.tet(t);
     int k = 0, l = 1;
     TetTopology::Ring ring;
-    bool widest_closes = false;
-    if (widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
-        (widest_closes = topo.edge_ring(t, k, l, ring)) && split_edge(topo, ring, bar, scratch, rule))
-      return true;
+    const bool widest_closes =
+        widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
+        topo.edge_ring(t, k, l, ring);
+    if (widest_closes && split_edge(topo, ring, bar, scratch, rule)) return true;
     // For the mesh's worst tet, or a sliver whose widest angle sits on a
     // surface edge (a flat ear), the tet's other edges whose rings close.
     if (rule == InsertionRule::kWorstFirst || (!widest_closes && topo.quality(t) < quality_of_angle(kSliverAngle))) {
