@@ -19,20 +19,13 @@
 #include "check/problem_log.hpp"
 #include "check/tet_faces.hpp"
 #include "core/error.hpp"
+#include "core/hash_mix.hpp"
 #include "core/point_text.hpp"
 
 namespace partet {
 namespace {
 
 constexpr uint32_t kNone = UINT32_MAX;
-
-uint64_t mix(uint64_t x) {  // splitmix64 finalizer
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 // -0.0 and 0.0 compare equal, so they must hash alike.
 uint64_t coordinate_bits(double x) { return std::bit_cast<uint64_t>(x == 0 ? 0.0 : x); }
@@ -59,7 +52,7 @@ class PointIndex {
   // The slot holding p's position, or the empty slot where it would go.
   size_t probe(const double* p) const {
     uint64_t h =
-        mix(mix(mix(coordinate_bits(p[0])) ^ coordinate_bits(p[1])) ^ coordinate_bits(p[2]));
+        hash_mix(hash_mix(hash_mix(coordinate_bits(p[0])) ^ coordinate_bits(p[1])) ^ coordinate_bits(p[2]));
     size_t mask = slots_.size() - 1;
     for (size_t slot = h & mask;; slot = (slot + 1) & mask) {
       uint32_t v = slots_[slot];

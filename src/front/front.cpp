@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/hash_mix.hpp"
 #include "octree/box_triangle.hpp"
 
 namespace partet {
@@ -23,15 +24,6 @@ uint64_t edge_key(uint32_t a, uint32_t b) {
   return (uint64_t{a} << 32) | b;
 }
 
-// splitmix64's finalizer: every input bit moves every output bit.
-uint64_t mix(uint64_t h) {
-  h ^= h >> 30;
-  h *= 0xBF58476D1CE4E5B9ull;
-  h ^= h >> 27;
-  h *= 0x94D049BB133111EBull;
-  return h ^ (h >> 31);
-}
-
 // The largest float not above x, the smallest not below it.
 float float_below(double x) {
   const float f = static_cast<float>(x);
@@ -45,14 +37,14 @@ float float_above(double x) {
 
 }  // namespace
 
-uint64_t Front::TripleTraits::hash(const Triple& k) { return mix((uint64_t{k.a} << 32 | k.b) ^ mix(k.c)); }
+uint64_t Front::TripleTraits::hash(const Triple& k) { return hash_mix((uint64_t{k.a} << 32 | k.b) ^ hash_mix(k.c)); }
 
 Front::Triple Front::sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
   sort3(a, b, c);
   return {a, b, c};
 }
 
-uint64_t Front::EdgeTraits::hash(uint64_t k) { return mix(k); }
+uint64_t Front::EdgeTraits::hash(uint64_t k) { return hash_mix(k); }
 
 Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCube& root)
     : tree_(&tree),

@@ -1,7 +1,8 @@
 // TetTopology (see tet_topology.hpp). Adjacency is built once from the
-// tets of each vertex; replace() relinks only the faces of
-// the new tets, matching them among themselves and against the cavity's
-// outer faces by linear search (a cavity has at most a few dozen faces).
+// tets of each vertex; replace() relinks only the faces of the new tets,
+// matching them among themselves and against the cavity's outer faces in a
+// small hash table (a linear search over the faces cost an insertion trial
+// as much as smoothing its vertex: 10 % of handle's optimizer).
 #include "optimize/tet_topology.hpp"
 
 #include <algorithm>
@@ -10,19 +11,23 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/hash_mix.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
 namespace {
 
-using FaceKey = std::array<uint32_t, 3>;
+using FaceKey = TetTopology::FaceKey;
 
 FaceKey face_key(const uint32_t* tet, int f) {
   FaceKey key;
   int n = 0;
   for (int k = 0; k < 4; ++k)
     if (k != f) key[n++] = tet[k];
-  std::sort(key.begin(), key.end());
+  // Three compare-exchanges (std::sort's set-up cost more than the faces).
+  if (key[0] > key[1]) std::swap(key[0], key[1]);
+  if (key[1] > key[2]) std::swap(key[1], key[2]);
+  if (key[0] > key[1]) std::swap(key[0], key[1]);
   return key;
 }
 
@@ -109,20 +114,49 @@ std::vector<uint8_t> TetTopology::boundary_vertices() const {
   return boundary;
 }
 
+uint32_t TetTopology::FaceMatch::hash(const FaceKey& key) {
+  return static_cast<uint32_t>(hash_mix((uint64_t{key[0]} << 32 | key[1]) ^ hash_mix(key[2])));
+}
+
+TetTopology::FaceMatch* TetTopology::find_match(const FaceKey& key) {
+  const size_t mask = matches_.size() - 1;
+  for (size_t i = FaceMatch::hash(key) & mask;; i = (i + 1) & mask) {
+    FaceMatch& m = matches_[i];
+    if (m.state == FaceMatch::kFree) {
+      m.key = key;
+      return &m;
+    }
+    if (m.key == key) return &m;
+  }
+}
+
 void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const uint32_t> new_tets,
                           std::vector<uint32_t>& created) {
-  struct Outer {
-    FaceKey key;
-    uint32_t twin;
-    bool matched;
-  };
-  std::vector<Outer> outer;
-  auto in_cavity = [&](uint32_t t) { return std::find(old_tets.begin(), old_tets.end(), t) != old_tets.end(); };
+  // Every face to match goes into a small open-addressing table keyed by
+  // its sorted vertices: first the cavity's outer faces (with the face
+  // behind each), then the new tets' faces, each closing an outer face or
+  // waiting for its partner among the new tets.
+  size_t capacity = 32;
+  while (capacity < 2 * (4 * old_tets.size() + new_tets.size())) capacity *= 2;  // at most half full
+  matches_.assign(capacity, FaceMatch{});
+  if (++stamp_ == 0) {
+    std::fill(mark_.begin(), mark_.end(), 0);
+    stamp_ = 1;
+  }
   for (uint32_t t : old_tets) {
     PARTET_ASSERT(alive(t), "replacing a dead tet");
+    mark_[t] = stamp_;
+  }
+  size_t open = 0;  // faces waiting: outer ones not closed, new ones without a partner
+  for (uint32_t t : old_tets) {
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = twin_[4 * t + f];
-      if (other == kNone || !in_cavity(other / 4)) outer.push_back({face_key(tet(t), f), other, false});
+      if (other != kNone && mark_[other / 4] == stamp_) continue;
+      FaceMatch* m = find_match(face_key(tet(t), f));
+      PARTET_ASSERT(m->state == FaceMatch::kFree, "a cavity's outer face appears twice");
+      m->state = FaceMatch::kOuter;
+      m->code = other;
+      ++open;
     }
   }
   // Freed in reverse, so that new tet i takes the slot of old tet i.
@@ -134,7 +168,6 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
     free_slots_.push_back(t);
   }
 
-  std::vector<std::pair<FaceKey, uint32_t>> pending;  // new faces not matched yet, with their codes
   for (size_t i = 0; i < new_tets.size() / 4; ++i) {
     uint32_t t;
     if (free_slots_.empty()) {
@@ -153,25 +186,20 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
     for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
     for (int f = 0; f < 4; ++f) {
       const uint32_t code = 4 * t + f;
-      const FaceKey key = face_key(tet(t), f);
-      auto inner = std::find_if(pending.begin(), pending.end(), [&](const auto& p) { return p.first == key; });
-      if (inner != pending.end()) {
-        link(code, inner->second);
-        pending.erase(inner);
+      FaceMatch* m = find_match(face_key(tet(t), f));
+      PARTET_ASSERT(m->state != FaceMatch::kClosed, "the new tets of a cavity have a face three times");
+      if (m->state == FaceMatch::kFree) {
+        m->state = FaceMatch::kWaiting;
+        m->code = code;
+        ++open;
         continue;
       }
-      auto out = std::find_if(outer.begin(), outer.end(), [&](const Outer& o) { return !o.matched && o.key == key; });
-      if (out != outer.end()) {
-        out->matched = true;
-        link(code, out->twin);
-        continue;
-      }
-      pending.emplace_back(key, code);
+      link(code, m->code);
+      m->state = FaceMatch::kClosed;
+      --open;
     }
   }
-  PARTET_ASSERT(pending.empty(), "the new tets of a cavity leave faces unmatched");
-  PARTET_ASSERT(std::all_of(outer.begin(), outer.end(), [](const Outer& o) { return o.matched; }),
-                "the new tets of a cavity do not cover its outer faces");
+  PARTET_ASSERT(open == 0, "the new tets of a cavity leave faces unmatched or do not cover its outer faces");
 }
 
 bool TetTopology::edge_ring(uint32_t t, int i, int j, Ring& ring) const {

@@ -16,6 +16,7 @@
 // leaves the topology empty.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -28,6 +29,7 @@ namespace partet {
 class TetTopology {
  public:
   static constexpr uint32_t kNone = UINT32_MAX;
+  using FaceKey = std::array<uint32_t, 3>;  // a face's vertices, ascending
   static constexpr int kMaxRing = 7;  // longest edge ring edge_ring() walks
 
   explicit TetTopology(TetMesh& mesh);
@@ -100,8 +102,21 @@ class TetTopology {
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
   double measure(uint32_t t) const;
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
-  mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk
+  mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk or replace
   mutable uint32_t stamp_ = 0;
+  // replace()'s face table (open addressing, reused between calls): a
+  // cavity's outer face, closed by a new tet, or a new tet's face waiting
+  // for its partner among the new tets.
+  struct FaceMatch {
+    enum State : uint8_t { kFree, kOuter, kWaiting, kClosed };
+    FaceKey key{};
+    uint32_t code = kNone;  // outer: the face behind it (or kNone); waiting: its code
+    State state = kFree;
+    static uint32_t hash(const FaceKey& key);
+  };
+  // The entry of `key`: its own, or the free one where it goes (key set).
+  FaceMatch* find_match(const FaceKey& key);
+  std::vector<FaceMatch> matches_;
 };
 
 // Local index of vertex v in tet t (0..3), or -1.

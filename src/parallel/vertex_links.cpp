@@ -6,19 +6,12 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/hash_mix.hpp"
 #include "parallel/migrate.hpp"
 
 namespace partet {
 
 namespace {
-
-uint64_t mix(uint64_t x) {  // splitmix64 finalizer: spreads lattice keys over the ranks
-  x ^= x >> 30;
-  x *= 0xbf58476d1ce4e5b9ULL;
-  x ^= x >> 27;
-  x *= 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 struct Copy {  // one rank's copy of an id, at its home rank
   uint64_t id;
@@ -46,7 +39,7 @@ VertexLinks link_shared_vertices(const Comm& comm, const std::vector<uint64_t>& 
   std::vector<int32_t> home(n);
   std::vector<Copy> mine(n);
   for (size_t v = 0; v < n; ++v) {
-    home[v] = static_cast<int32_t>(mix(global_ids[v]) % static_cast<uint64_t>(comm.size()));
+    home[v] = static_cast<int32_t>(hash_mix(global_ids[v]) % static_cast<uint64_t>(comm.size()));
     mine[v] = {global_ids[v], static_cast<uint32_t>(v), comm.rank()};
   }
   std::vector<Copy> copies = migrate(comm, home, mine);
