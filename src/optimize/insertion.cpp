@@ -197,9 +197,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
   for (int f = 0; f < 4; ++f)
     if (topo.twin(4 * t + f) != TetTopology::kNone) cavity.push_back(topo.twin(4 * t + f) / 4);
   if (cavity.size() > 1) {
-    if (try_point_then_kernel(topo, cavity, centroid, bar, scratch, rule)) return true;
-    // An edge split (step 3 of insertion.hpp).
-    // (The trials above may have grown the tet array: t's vertices are read again.)
+    // The edge split first (step 1 of insertion.hpp).
     const uint32_t* u = topo.tet(t);
     int k = 0, l = 1;
     TetTopology::Ring ring;
@@ -207,6 +205,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
         widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
         topo.edge_ring(t, k, l, ring);
     if (widest_closes && split_edge(topo, ring, bar, scratch, rule)) return true;
+    if (try_point_then_kernel(topo, cavity, centroid, bar, scratch, rule)) return true;
     // For the mesh's worst tet, or a sliver whose widest angle sits on a
     // surface edge (a flat ear), the tet's other edges whose rings close.
     if (rule == InsertionRule::kWorstFirst || (!widest_closes && topo.quality(t) < quality_of_angle(kSliverAngle))) {

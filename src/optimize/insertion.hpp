@@ -1,26 +1,30 @@
 // Interior vertex insertion around a bad tet (after Klingner and Shewchuk):
 // a new vertex is joined to the outer faces of a cavity, in turn
-//  1. the tet with its face neighbours, the vertex at the tet's centroid;
-//  2. the same cavity, the vertex at the deepest point of its kernel
-//     (core/kernel_point.hpp);
-//  3. an edge split: the tets around the edge opposite the tet's largest
+//  1. an edge split: the tets around the edge opposite the tet's largest
 //     dihedral angle (when that edge is interior and its ring closes), the
 //     vertex at the edge's midpoint, else (the rounded midpoint of a flat
 //     ring may see one of its faces from behind) at the deepest point of
-//     the ring's kernel. A flat "ear" tet on two surface
-//     triangles that meet at a wide angle then becomes two tets, one per
-//     surface triangle; this step makes most of the insertions (femur:
-//     1,005 of 1,095) and took the share of tets under 10 degrees below
-//     the best peer's on 30 of 32 corpus inputs instead of 24; for the
-//     mesh's worst tet (kWorstFirst), and for a sliver whose widest angle
-//     sits on a boundary edge (the flat ear over two nearly coplanar
-//     surface triangles has two angles of 180 degrees, one at the surface
-//     edge), every other edge of the tet whose ring closes is tried after
-//     it, in local vertex order (fandisk's smallest angle 16.9 -> 23.3
-//     degrees, eight 6.0 -> 8.1, femur 0.60 -> 0.85 for the worst tet;
-//     refined surfaces, whose split triangles are coplanar up to rounding,
-//     lost their flat ears with the sliver rule and the kernel point:
-//     femur r1 5.8e-14 -> 0.62 degrees, eight r1 0 -> 4.7);
+//     the ring's kernel (core/kernel_point.hpp). A flat "ear" tet on two
+//     surface triangles that meet at a wide angle then becomes two tets,
+//     one per surface triangle. This step makes most of the insertions
+//     (femur: 1,005 of 1,095) and took the share of tets under 10 degrees
+//     below the best peer's on 30 of 32 corpus inputs instead of 24. It
+//     comes first: tried first, step 2 lost 99 % of its smoothing trials
+//     and made 2.5 % of the insertions for a third of their time (handle,
+//     couplingdown, femur, rotor, spool, pinion); with the split first the
+//     smallest angle rose on six corpus inputs (sphere966 18.3 -> 20.0
+//     degrees, knot1 22.8 -> 23.5) and fell on none by more than 0.05;
+//  2. the tet with its face neighbours, the vertex at the tet's centroid,
+//     else at the deepest point of that cavity's kernel;
+//  3. for the mesh's worst tet (kWorstFirst), and for a sliver whose
+//     widest angle sits on a boundary edge (the flat ear over two nearly
+//     coplanar surface triangles has two angles of 180 degrees, one at the
+//     surface edge), every other edge of the tet whose ring closes, split
+//     as in step 1, in local vertex order (fandisk's smallest angle 16.9 ->
+//     23.3 degrees, eight 6.0 -> 8.1, femur 0.60 -> 0.85 for the worst
+//     tet; refined surfaces, whose split triangles are coplanar up to
+//     rounding, lost their flat ears with the sliver rule and the kernel
+//     point: femur r1 5.8e-14 -> 0.62 degrees, eight r1 0 -> 4.7);
 //  4. the tets around the tet's four vertices, the vertex at the deepest
 //     point of their kernel: what a flat tet on four surface vertices (over
 //     two nearly coplanar surface triangles) needs, whose centroid lies on
