@@ -139,19 +139,16 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
   size_t capacity = 32;
   while (capacity < 2 * (4 * old_tets.size() + new_tets.size())) capacity *= 2;  // at most half full
   matches_.assign(capacity, FaceMatch{});
-  if (++stamp_ == 0) {
-    std::fill(mark_.begin(), mark_.end(), 0);
-    stamp_ = 1;
-  }
+  const uint32_t stamp = next_stamp();
   for (uint32_t t : old_tets) {
     PARTET_ASSERT(alive(t), "replacing a dead tet");
-    mark_[t] = stamp_;
+    mark_[t] = stamp;
   }
   size_t open = 0;  // faces waiting: outer ones not closed, new ones without a partner
   for (uint32_t t : old_tets) {
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = twin_[4 * t + f];
-      if (other != kNone && mark_[other / 4] == stamp_) continue;
+      if (other != kNone && mark_[other / 4] == stamp) continue;
       FaceMatch* m = find_match(face_key(tet(t), f));
       PARTET_ASSERT(m->state == FaceMatch::kFree, "a cavity's outer face appears twice");
       m->state = FaceMatch::kOuter;
@@ -240,23 +237,28 @@ void TetTopology::move_vertex(uint32_t v, const double* x) {
   for (uint32_t t : star) quality_[t] = std::numeric_limits<double>::quiet_NaN();
 }
 
-void TetTopology::vertex_star(uint32_t v, std::vector<uint32_t>& star) const {
-  star.clear();
-  const uint32_t first = vertex_tet_[v];
-  if (first == kNone) return;
+uint32_t TetTopology::next_stamp() const {
   if (++stamp_ == 0) {
     std::fill(mark_.begin(), mark_.end(), 0);
     stamp_ = 1;
   }
-  mark_[first] = stamp_;
+  return stamp_;
+}
+
+void TetTopology::vertex_star(uint32_t v, std::vector<uint32_t>& star) const {
+  star.clear();
+  const uint32_t first = vertex_tet_[v];
+  if (first == kNone) return;
+  const uint32_t stamp = next_stamp();
+  mark_[first] = stamp;
   star.push_back(first);
   for (size_t s = 0; s < star.size(); ++s) {
     const uint32_t t = star[s];
     const int lv = local_index(tet(t), v);
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = twin_[4 * t + f];
-      if (f == lv || other == kNone || mark_[other / 4] == stamp_) continue;
-      mark_[other / 4] = stamp_;
+      if (f == lv || other == kNone || mark_[other / 4] == stamp) continue;
+      mark_[other / 4] = stamp;
       star.push_back(other / 4);
     }
   }

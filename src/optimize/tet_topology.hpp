@@ -104,6 +104,8 @@ class TetTopology {
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk or replace
   mutable uint32_t stamp_ = 0;
+  // A stamp no slot has in mark_ yet (clearing mark_ when the count wraps).
+  uint32_t next_stamp() const;
   // replace()'s face table (open addressing, reused between calls): a
   // cavity's outer face, closed by a new tet, or a new tet's face waiting
   // for its partner among the new tets.
