@@ -15,7 +15,6 @@
 #include "octree/range_query.hpp"
 
 namespace partet {
-
 namespace {
 
 constexpr uint32_t kNeverFailed = std::numeric_limits<uint32_t>::max();
@@ -62,11 +61,12 @@ class Remover {
   void neighbourhood(uint32_t f);
   bool neighbourhood_changed_since(uint64_t stamp) const;
   bool neighbourhood_foreign() const;
-  // True when face f's last failure in this call checked target p and what
-  // blocked it then still does (still_blocked): checking it again must
-  // fail; `why` is set to that blocker.
+  // True when face f's last failure (this call's or an earlier one's, see
+  // RemovalMemo) checked target p and what blocked it then still does
+  // (still_blocked): checking it again must fail; `why` is set to that
+  // blocker.
   bool known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker& why) const;
-  // Keeps why face f failed: blocked_, the targets it checked.
+  // Keeps why face f failed (blocked_, the targets it checked) in the memo.
   void remember_failure(uint32_t f);
   void make_tet(uint32_t f, uint32_t p);
   // closers_ = the third vertex of every other alive face along an edge of
@@ -101,24 +101,7 @@ class Remover {
   std::vector<uint32_t> closers_;
   std::vector<uint32_t> added_, shrunk_;
 
-  // Failures of this call (only tets are applied during a call, so a
-  // blocker keeps blocking while it is on the front: still_blocked): per
-  // face slot its latest failure, a run [first, first + count) of the pool
-  // holding every target it checked and why each failed, or kNoIndex.
-  // Runs of closed or retried faces are garbage, dropped when the pool
-  // holds twice the live runs.
-  struct Blocked {
-    uint32_t target;
-    RemovalBlocker why;
-  };
-  struct Failure {
-    uint32_t first = kNoIndex;
-    uint32_t count = 0;
-  };
-  std::vector<Failure> failure_of_;
-  std::vector<Blocked> blocked_pool_;
-  size_t live_blocked_ = 0;
-  std::vector<Blocked> blocked_;  // the current try's checked targets
+  std::vector<RemovalMemo::Blocked> blocked_;  // the current try's checked targets
   void drop_garbage_failures();
 };
 
@@ -171,14 +154,14 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
-  failure_of_.resize(front_.num_face_slots());
+  memo_.failure_of.resize(front_.num_face_slots());
 }
 
 bool Remover::known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker& why) const {
-  const Failure& failure = failure_of_[f];
+  const RemovalMemo::Failure& failure = memo_.failure_of[f];
   // Targets mostly keep their rank between tries: look at `hint` first.
   for (size_t k = 0; k < failure.count; ++k) {
-    const Blocked& b = blocked_pool_[failure.first + (hint + k) % failure.count];
+    const RemovalMemo::Blocked& b = memo_.blocked_pool[failure.first + (hint + k) % failure.count];
     if (b.target != p) continue;
     if (!still_blocked(front_, f, p, b.why)) return false;
     why = b.why;
@@ -188,30 +171,31 @@ bool Remover::known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker&
 }
 
 void Remover::remember_failure(uint32_t f) {
-  live_blocked_ -= failure_of_[f].count;
-  if (blocked_pool_.size() > 1024 && blocked_pool_.size() > 2 * live_blocked_) drop_garbage_failures();
-  PARTET_ASSERT(blocked_pool_.size() + blocked_.size() < kNoIndex, "failure pool overflow");
-  failure_of_[f] = {static_cast<uint32_t>(blocked_pool_.size()), static_cast<uint32_t>(blocked_.size())};
-  blocked_pool_.insert(blocked_pool_.end(), blocked_.begin(), blocked_.end());
-  live_blocked_ += blocked_.size();
+  memo_.live_blocked -= memo_.failure_of[f].count;
+  if (memo_.blocked_pool.size() > 1024 && memo_.blocked_pool.size() > 2 * memo_.live_blocked) drop_garbage_failures();
+  PARTET_ASSERT(memo_.blocked_pool.size() + blocked_.size() < kNoIndex, "failure pool overflow");
+  memo_.failure_of[f] = {static_cast<uint32_t>(memo_.blocked_pool.size()), static_cast<uint32_t>(blocked_.size())};
+  memo_.blocked_pool.insert(memo_.blocked_pool.end(), blocked_.begin(), blocked_.end());
+  memo_.live_blocked += blocked_.size();
 }
 
 void Remover::drop_garbage_failures() {
-  std::vector<Blocked> kept;
-  kept.reserve(live_blocked_);
-  live_blocked_ = 0;
-  for (uint32_t f = 0; f < failure_of_.size(); ++f) {
-    Failure& failure = failure_of_[f];
+  std::vector<RemovalMemo::Blocked> kept;
+  kept.reserve(memo_.live_blocked);
+  memo_.live_blocked = 0;
+  for (uint32_t f = 0; f < memo_.failure_of.size(); ++f) {
+    RemovalMemo::Failure& failure = memo_.failure_of[f];
     if (!front_.alive(f) || failure.count == 0) {
       failure = {};
       continue;
     }
     const uint32_t first = static_cast<uint32_t>(kept.size());
-    kept.insert(kept.end(), blocked_pool_.begin() + failure.first, blocked_pool_.begin() + failure.first + failure.count);
+    kept.insert(kept.end(), memo_.blocked_pool.begin() + failure.first,
+                memo_.blocked_pool.begin() + failure.first + failure.count);
     failure.first = first;
-    live_blocked_ += failure.count;
+    memo_.live_blocked += failure.count;
   }
-  blocked_pool_.swap(kept);
+  memo_.blocked_pool.swap(kept);
 }
 
 void Remover::push(uint32_t f) {
@@ -325,7 +309,7 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
-  failure_of_.assign(front_.num_face_slots(), Failure{});
+  memo_.failure_of.resize(front_.num_face_slots());
   if (seeds) {
     for (uint32_t f : *seeds)
       if (front_.alive(f)) push(f);
@@ -381,6 +365,16 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
 
 }  // namespace
 
+namespace {
+
+// The blocking entity of `why` is a face slot (else a vertex, or none).
+bool blocked_by_face(const RemovalBlocker& why) {
+  return why.verdict == RemovalVerdict::kDuplicateFace || why.verdict == RemovalVerdict::kEdgeCrossesFace ||
+         why.verdict == RemovalVerdict::kFaceCrossesEdge;
+}
+
+}  // namespace
+
 void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
   for (std::vector<uint32_t>* at : {&failed_capped_at, &failed_full_at}) {
     std::vector<uint32_t> kept;
@@ -391,6 +385,26 @@ void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
       }
     at->swap(kept);
   }
+  std::vector<Failure> failures;
+  std::vector<Blocked> pool;
+  for (size_t f = 0; f < new_face.size() && f < failure_of.size(); ++f) {
+    if (new_face[f] == kNoIndex) continue;
+    Failure kept{static_cast<uint32_t>(pool.size()), 0};
+    const Failure& old = failure_of[f];
+    for (uint32_t k = 0; k < old.count; ++k) {
+      Blocked b = blocked_pool[old.first + k];
+      if (blocked_by_face(b.why)) {
+        if (b.why.entity >= new_face.size() || new_face[b.why.entity] == kNoIndex) continue;
+        b.why.entity = new_face[b.why.entity];
+      }
+      pool.push_back(b);
+      ++kept.count;
+    }
+    failures.push_back(kept.count > 0 ? kept : Failure{});
+  }
+  failure_of.swap(failures);
+  blocked_pool.swap(pool);
+  live_blocked = blocked_pool.size();
 }
 
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,

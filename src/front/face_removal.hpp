@@ -21,10 +21,10 @@
 //    are reclassified kDone. A target is checked against the front over the
 //    leaves that meet its tet's box (most faces take their first target);
 //    past the first few, against one gather over the whole neighbourhood.
-//  - a target the face's last failure in this call found blocked is not
-//    checked again while its blocker still blocks (still_blocked: the
-//    blocking entity is still on the front): during a call only tets are
-//    applied, so the check would fail again. A third of the checks on the
+//  - a target the face's last failure (in this call or, with a memo, an
+//    earlier one) found blocked is not checked again while its blocker
+//    still blocks (still_blocked: the blocking entity is still on the
+//    front), so the check would fail again. A third of the checks on the
 //    corpus were such repeats; the tets made are the same.
 //
 // Order and progress. Faces wait in a min-heap by longest edge (smallest
@@ -47,6 +47,7 @@
 
 #include "core/tet_mesh.hpp"
 #include "front/front.hpp"
+#include "front/removal_checks.hpp"
 #include "octree/octree.hpp"
 
 namespace partet {
@@ -68,18 +69,42 @@ struct RemovalOptions {
   int rescues = 3;
 };
 
-// What earlier calls learnt: per face slot, the front's change counter when
-// the face last failed a capped pass (a full failure counts as one too) and
-// a full pass, under `min_quality`. A face whose neighbourhood leaves have
-// not changed since is not retried (its answer depends on nothing else), so
-// a call after a local change costs what changed, not the whole front.
-// Valid for one front and one set of RemovalOptions; a call with another
-// min_quality starts it afresh.
+// What earlier calls learnt, so that a call after a local change costs
+// what changed, not the whole front:
+//  - per face slot, the front's change counter when the face last failed a
+//    capped pass (a full failure counts as one too) and a full pass, under
+//    `min_quality`. A face whose neighbourhood leaves have not changed
+//    since is not retried (its answer depends on nothing else). Valid for
+//    one front and one set of RemovalOptions; a call with another
+//    min_quality starts these afresh;
+//  - per face slot, why its latest failed try failed, target by target
+//    (a run [first, first + count) of `blocked_pool`): a target whose
+//    blocker still blocks (still_blocked) is not checked again. Exact on
+//    every later front, whatever min_quality: face slots are never reused
+//    and a vertex that was ever on the front keeps its index and point, so
+//    a blocker still on the front still blocks. The tree-less rounds
+//    retry every face near a change; most of their targets are such
+//    repeats. Runs of closed or retried faces are garbage, dropped when
+//    the pool holds twice the live runs.
 struct RemovalMemo {
   double min_quality = 0;
   std::vector<uint32_t> failed_capped_at, failed_full_at;  // 32 bits: 4e9 tets are far beyond one rank
 
-  // Follows Front::compact: `new_face` maps old face slots to new ones.
+  struct Blocked {
+    uint32_t target;
+    RemovalBlocker why;
+  };
+  struct Failure {
+    uint32_t first = kNoIndex;
+    uint32_t count = 0;
+  };
+  std::vector<Failure> failure_of;
+  std::vector<Blocked> blocked_pool;
+  size_t live_blocked = 0;
+
+  // Follows Front::compact: `new_face` maps old face slots to new ones. A
+  // record whose blocking face was closed is dropped (its target is
+  // checked again).
   void renumber(const std::vector<uint32_t>& new_face);
 };
 

@@ -78,9 +78,12 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
 
 // True when a removal (f, p) that failed for `why` must still fail on the
 // front as it is now: the blocking entity is still on the front and the
-// new edge or side it blocked is still new. The front must only have had
-// tets applied since (apply_tet: face slots are never reused and no front
-// vertex appears). Exact: it re-evaluates no geometry, which is fixed.
+// new edge or side it blocked is still new. Any changes may have been made
+// since by apply_tet, remove_tet and add_vertex: face slots are never
+// reused, and a vertex that was ever on the front keeps its index and
+// point (remove_last_vertex only takes back one no face used), so a
+// blocker still on the front, against an edge or side still new, blocks
+// as it did. Exact: it re-evaluates no geometry.
 bool still_blocked(const Front& front, uint32_t f, uint32_t p, const RemovalBlocker& why);
 
 // Closed segment s-o against closed triangle (s, t1, t2) sharing vertex s:

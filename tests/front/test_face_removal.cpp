@@ -326,5 +326,58 @@ TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
   EXPECT_GT(released, 100u);
 }
 
+// The memo's blocked records outlive a call: after a compaction (face
+// slots renumbered) and deletions of tets (faces reopened, as the tree-less
+// removals do), every record whose blocker still_blocked keeps must still
+// fail when checked from scratch.
+TEST(FrontRemoval, BlockedRecordsStaySoundAfterCompactionAndDeletions) {
+  size_t kept = 0, dropped = 0;
+  for (const char* name : {"joint.off", "pipe.off", "spool.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    const size_t core_tets = out.num_tets();
+    RemovalMemo memo;
+    remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
+    memo.renumber(front.compact());
+    ASSERT_EQ(memo.failure_of.size(), front.num_face_slots()) << name;
+    // Reopen every fifth tet the removals made, newest first.
+    std::vector<uint32_t> added, shrunk;
+    for (size_t t = out.num_tets(); t-- > core_tets;)
+      if (t % 5 == 0) front.remove_tet(&out.tets[4 * t], added, shrunk);
+    NearFront near;
+    std::vector<size_t> leaves;
+    for (uint32_t f = 0; f < memo.failure_of.size(); ++f) {
+      if (!front.alive(f)) continue;
+      const RemovalMemo::Failure& failure = memo.failure_of[f];
+      for (uint32_t k = 0; k < failure.count; ++k) {
+        const RemovalMemo::Blocked& b = memo.blocked_pool[failure.first + k];
+        if (front.vertex_uses(b.target) == 0 || !still_blocked(front, f, b.target, b.why)) {
+          ++dropped;
+          continue;
+        }
+        ++kept;
+        const uint32_t* t = front.face(f);
+        const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(b.target)};
+        double lo[3], hi[3];
+        for (int i = 0; i < 3; ++i) {
+          lo[i] = std::min({q[0][i], q[1][i], q[2][i], q[3][i]});
+          hi[i] = std::max({q[0][i], q[1][i], q[2][i], q[3][i]});
+        }
+        uint32_t glo[3], ghi[3];
+        grid_range(m.root, lo, hi, glo, ghi);
+        front.query().leaves_in_range(glo, ghi, leaves);
+        gather_near_front(front, leaves, near);
+        ASSERT_NE(check_removal(front, f, b.target, near), RemovalVerdict::kValid)
+            << name << ": face " << f << " target " << b.target << " was blocked by " << verdict_name(b.why.verdict)
+            << " " << b.why.entity << ", still there, and is valid now";
+      }
+    }
+  }
+  EXPECT_GT(kept, 1000u);
+  EXPECT_GT(dropped, 10u);
+}
+
 }  // namespace
 }  // namespace partet::test
