@@ -97,6 +97,7 @@ class Remover {
   std::vector<uint32_t> leaf_cells_;  // their grid cells, lo then hi (6 per leaf)
   std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
   NearFront near_;
+  Suspects suspects_;  // what blocked this face's targets so far: tested first
   std::vector<Target> targets_;
   std::vector<uint32_t> closers_;
   std::vector<uint32_t> added_, shrunk_;
@@ -234,6 +235,7 @@ bool Remover::try_face(uint32_t f, bool full) {
   // it is not checked again.
   const size_t n = std::min(targets_.size(), full ? kFullTargets : kCappedTargets);
   blocked_.clear();
+  suspects_.clear();
   bool near_is_neighbourhood = false;
   for (size_t i = 0; i < n; ++i) {
     const uint32_t p = targets_[i].vertex;
@@ -241,6 +243,7 @@ bool Remover::try_face(uint32_t f, bool full) {
     if (known_blocked(f, p, i, why)) {
       ++counts_.skipped_checks;
       blocked_.push_back({p, why});
+      suspects_.add(why);
       continue;
     }
     ++counts_.checks;
@@ -250,11 +253,12 @@ bool Remover::try_face(uint32_t f, bool full) {
       gather_near_front(front_, leaves_, near_);
       near_is_neighbourhood = true;
     }
-    if (check_removal(front_, f, p, near_, &why) == RemovalVerdict::kValid) {
+    if (check_removal(front_, f, p, near_, &why, &suspects_) == RemovalVerdict::kValid) {
       make_tet(f, p);
       return true;
     }
     blocked_.push_back({p, why});
+    suspects_.add(why);
   }
   remember_failure(f);
   return false;

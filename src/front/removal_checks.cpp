@@ -123,8 +123,15 @@ RemovalVerdict blocked(RemovalBlocker* why, RemovalVerdict verdict, uint32_t ent
 
 }  // namespace
 
+void Suspects::add(const RemovalBlocker& why) {
+  std::vector<uint32_t>* list = nullptr;
+  if (why.verdict == RemovalVerdict::kVertexInside) list = &vertices;
+  if (why.verdict == RemovalVerdict::kEdgeCrossesFace || why.verdict == RemovalVerdict::kFaceCrossesEdge) list = &faces;
+  if (list && std::find(list->begin(), list->end(), why.entity) == list->end()) list->push_back(why.entity);
+}
+
 RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near,
-                             RemovalBlocker* why) {
+                             RemovalBlocker* why, const Suspects* suspects) {
   const uint32_t* base = front.face(f);
   const uint32_t a = base[0], b = base[1], c = base[2];
   if (p == a || p == b || p == c) return blocked(why, RemovalVerdict::kNotPositive, p, 0);
@@ -152,20 +159,17 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
   const Box tet_box = box_of(corners, 4);
 
   // (i) Front vertices in the closed tet.
-  for (uint32_t v : near.vertices) {
-    if (v == a || v == b || v == c || v == p) continue;
+  auto inside = [&](uint32_t v) {
+    if (v == a || v == b || v == c || v == p) return false;
     const double* q = front.point(v);
-    if (!point_in_box(q, tet_box)) continue;
-    if (orient3d(pa, pc, pb, q) <= 0 && orient3d(pb, pc, pp, q) <= 0 && orient3d(pa, pp, pc, q) <= 0 &&
-        orient3d(pa, pb, pp, q) <= 0)
-      return blocked(why, RemovalVerdict::kVertexInside, v, 0);
-  }
+    return point_in_box(q, tet_box) && orient3d(pa, pc, pb, q) <= 0 && orient3d(pb, pc, pp, q) <= 0 &&
+           orient3d(pa, pp, pc, q) <= 0 && orient3d(pa, pb, pp, q) <= 0;
+  };
 
   // (ii) New edges against front faces, (iii) new faces against front
   // edges; only faces whose box meets the tet's box matter for either.
   const bool any_new_edge = new_edge[0] || new_edge[1] || new_edge[2];
   const bool any_new_side = new_side[0] || new_side[1] || new_side[2];
-  if (!any_new_edge && !any_new_side) return RemovalVerdict::kValid;
   Box edge_box[3], side_box[3];
   for (int k = 0; k < 3; ++k) {
     const double* e[2] = {pp, front.point(ends[k])};
@@ -173,15 +177,17 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     const double* sp[3] = {front.point(sides[k][0]), front.point(sides[k][1]), front.point(sides[k][2])};
     side_box[k] = box_of(sp, 3);
   }
-  for (uint32_t g : near.faces) {
+  // The verdict face g gives, with the index of the edge or side it blocks.
+  auto crossing = [&](uint32_t g, int& index) {
     const float* face_box = front.face_box(g);
-    if (!meets_float_box(tet_box, face_box)) continue;
+    if (!meets_float_box(tet_box, face_box)) return RemovalVerdict::kValid;
     const uint32_t* t = front.face(g);
     for (int k = 0; k < 3; ++k) {
       if (!new_edge[k] || !meets_float_box(edge_box[k], face_box)) continue;
-      if (segment_conflicts(front, p, ends[k], t)) return blocked(why, RemovalVerdict::kEdgeCrossesFace, g, k);
+      index = k;
+      if (segment_conflicts(front, p, ends[k], t)) return RemovalVerdict::kEdgeCrossesFace;
     }
-    if (!any_new_side) continue;
+    if (!any_new_side) return RemovalVerdict::kValid;
     for (int k = 0; k < 3; ++k) {
       const uint32_t u = t[k], w = t[(k + 1) % 3];
       if (u > w) continue;  // the edge is checked from the face running along it upwards
@@ -190,9 +196,30 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
       if (!boxes_meet(tet_box, uw)) continue;
       for (int s = 0; s < 3; ++s) {
         if (!new_side[s] || !boxes_meet(side_box[s], uw)) continue;
-        if (segment_conflicts(front, u, w, sides[s])) return blocked(why, RemovalVerdict::kFaceCrossesEdge, g, s);
+        index = s;
+        if (segment_conflicts(front, u, w, sides[s])) return RemovalVerdict::kFaceCrossesEdge;
       }
     }
+    return RemovalVerdict::kValid;
+  };
+
+  const bool any_new = any_new_edge || any_new_side;
+  int index = 0;
+  if (suspects) {
+    for (uint32_t v : suspects->vertices)
+      if (inside(v)) return blocked(why, RemovalVerdict::kVertexInside, v, 0);
+    if (any_new)
+      for (uint32_t g : suspects->faces) {
+        const RemovalVerdict verdict = crossing(g, index);
+        if (verdict != RemovalVerdict::kValid) return blocked(why, verdict, g, index);
+      }
+  }
+  for (uint32_t v : near.vertices)
+    if (inside(v)) return blocked(why, RemovalVerdict::kVertexInside, v, 0);
+  if (!any_new) return RemovalVerdict::kValid;
+  for (uint32_t g : near.faces) {
+    const RemovalVerdict verdict = crossing(g, index);
+    if (verdict != RemovalVerdict::kValid) return blocked(why, verdict, g, index);
   }
   return RemovalVerdict::kValid;
 }

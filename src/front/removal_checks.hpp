@@ -71,10 +71,30 @@ struct RemovalBlocker {
   uint32_t entity = 0;
 };
 
+// Front entities to test before the near front, e.g. what blocked the
+// other targets of the same face: the far targets of a long face are
+// mostly blocked by the same few faces, which a scan of its whole
+// neighbourhood finds only after hundreds of others. Each must be on the
+// front (alive faces, front vertices); the verdict is the one the near
+// front alone gives (each suspect is a front entity the check may test),
+// only the blocker reported may differ.
+struct Suspects {
+  std::vector<uint32_t> faces;
+  std::vector<uint32_t> vertices;
+  void clear() {
+    faces.clear();
+    vertices.clear();
+  }
+  // Adds the entity of `why` when it is a vertex inside or a crossing face
+  // and not there yet.
+  void add(const RemovalBlocker& why);
+};
+
 // Validity of the tet on alive face f with apex p, against `near`; with
-// `why`, the reason when it is not valid.
+// `why`, the reason when it is not valid. With `suspects`, those are
+// tested first.
 RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const NearFront& near,
-                             RemovalBlocker* why = nullptr);
+                             RemovalBlocker* why = nullptr, const Suspects* suspects = nullptr);
 
 // True when a removal (f, p) that failed for `why` must still fail on the
 // front as it is now: the blocking entity is still on the front and the
