@@ -98,6 +98,7 @@ class Remover {
   std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
   NearFront near_;
   Suspects suspects_;  // what blocked this face's targets so far: tested first
+  const NearFront no_front_;  // to test the suspects alone
   std::vector<Target> targets_;
   std::vector<uint32_t> closers_;
   std::vector<uint32_t> added_, shrunk_;
@@ -247,13 +248,21 @@ bool Remover::try_face(uint32_t f, bool full) {
       continue;
     }
     ++counts_.checks;
+    // What blocked the earlier targets goes first, before any gather: the
+    // far targets of a long face mostly fail on it.
+    const bool gathered = i >= kCappedTargets && near_is_neighbourhood;
+    if (!gathered && !suspects_.empty() &&
+        check_removal(front_, f, p, no_front_, &why, &suspects_) != RemovalVerdict::kValid) {
+      blocked_.push_back({p, why});
+      continue;
+    }
     if (i < kCappedTargets) {
       gather_around_tet(pa, pb, pc, front_.point(p));
     } else if (!near_is_neighbourhood) {
       gather_near_front(front_, leaves_, near_);
       near_is_neighbourhood = true;
     }
-    if (check_removal(front_, f, p, near_, &why, &suspects_) == RemovalVerdict::kValid) {
+    if (check_removal(front_, f, p, near_, &why, gathered ? &suspects_ : nullptr) == RemovalVerdict::kValid) {
       make_tet(f, p);
       return true;
     }

@@ -81,6 +81,7 @@ struct RemovalBlocker {
 struct Suspects {
   std::vector<uint32_t> faces;
   std::vector<uint32_t> vertices;
+  bool empty() const { return faces.empty() && vertices.empty(); }
   void clear() {
     faces.clear();
     vertices.clear();
