@@ -207,9 +207,10 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
   int index = 0;
   if (suspects) {
     for (uint32_t v : suspects->vertices)
-      if (inside(v)) return blocked(why, RemovalVerdict::kVertexInside, v, 0);
+      if (front.vertex_uses(v) > 0 && inside(v)) return blocked(why, RemovalVerdict::kVertexInside, v, 0);
     if (any_new)
       for (uint32_t g : suspects->faces) {
+        if (!front.alive(g)) continue;
         const RemovalVerdict verdict = crossing(g, index);
         if (verdict != RemovalVerdict::kValid) return blocked(why, verdict, g, index);
       }

@@ -74,10 +74,11 @@ struct RemovalBlocker {
 // Front entities to test before the near front, e.g. what blocked the
 // other targets of the same face: the far targets of a long face are
 // mostly blocked by the same few faces, which a scan of its whole
-// neighbourhood finds only after hundreds of others. Each must be on the
-// front (alive faces, front vertices); the verdict is the one the near
-// front alone gives (each suspect is a front entity the check may test),
-// only the blocker reported may differ.
+// neighbourhood finds only after hundreds of others. Those no longer on
+// the front are passed over, so a list may outlive changes to the front;
+// the verdict is the one the near front alone gives (each suspect tested
+// is a front entity the check may test), only the blocker reported may
+// differ.
 struct Suspects {
   std::vector<uint32_t> faces;
   std::vector<uint32_t> vertices;

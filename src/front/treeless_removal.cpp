@@ -31,6 +31,7 @@ double squared_distance(const double* x, const double* y) {
 constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown) as one cavity
 constexpr size_t kMaxSmallCavityFaces = 64;  // the same, with TreelessStrategy::kSmallCavities
 constexpr int kMaxGrowth = 8;
+constexpr size_t kSuspects = 16;  // blockers valid_tet keeps to test first
 constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
 constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
 // A patch's kernel point is searched in its own bounding box, and when that
@@ -114,6 +115,8 @@ class TreelessRemover {
 
   std::vector<size_t> leaves_;
   NearFront near_;
+  Suspects suspects_;          // what blocked the last tets valid_tet refused
+  const NearFront no_front_;   // to test the suspects alone
   std::vector<uint32_t> added_, shrunk_;
   // Tets deleted by the current growth step; false when one of them had
   // all four faces on the front (its deletion opened none to rebuild it from).
@@ -227,9 +230,17 @@ bool TreelessRemover::valid_tet(uint32_t f, uint32_t v) {
   const uint32_t* t = front_.face(f);
   const double* p[4] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2]), front_.point(v)};
   if (!own_leaves_around(p, 4)) return false;
-  gather_near_front(front_, leaves_, near_);
   ++counts_.checks;
-  return check_removal(front_, f, v, near_) == RemovalVerdict::kValid;
+  // What blocked the last tets tried (mostly the same cone's) goes first,
+  // before the gather.
+  RemovalBlocker why;
+  if (!suspects_.empty() && check_removal(front_, f, v, no_front_, &why, &suspects_) != RemovalVerdict::kValid)
+    return false;
+  gather_near_front(front_, leaves_, near_);
+  if (check_removal(front_, f, v, near_, &why) == RemovalVerdict::kValid) return true;
+  if (suspects_.faces.size() + suspects_.vertices.size() >= kSuspects) suspects_.clear();
+  suspects_.add(why);
+  return false;
 }
 
 bool TreelessRemover::sees_all(const std::vector<uint32_t>& faces, const double* q) const {

@@ -379,5 +379,68 @@ TEST(FrontRemoval, BlockedRecordsStaySoundAfterCompactionAndDeletions) {
   EXPECT_GT(dropped, 10u);
 }
 
+// Suspects change no verdict: with what blocked earlier removals tested
+// first (some of it closed by the tets applied since), every check agrees
+// with the plain one, and the suspects alone refuse many of them.
+TEST(FrontRemoval, SuspectsChangeNoVerdict) {
+  size_t checks = 0, refused_by_suspects = 0, stale = 0;
+  for (const char* name : {"joint.off", "spool.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    NearFront near;
+    const NearFront none;
+    Suspects suspects;
+    std::vector<size_t> leaves;
+    std::vector<uint32_t> added, shrunk;
+    auto gather = [&](uint32_t f, uint32_t p, double grow) {
+      const uint32_t* t = front.face(f);
+      const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(p)};
+      double lo[3], hi[3], longest = 0;
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min({q[0][k], q[1][k], q[2][k], q[3][k]});
+        hi[k] = std::max({q[0][k], q[1][k], q[2][k], q[3][k]});
+        longest = std::max(longest, hi[k] - lo[k]);
+      }
+      for (int k = 0; k < 3; ++k) {
+        lo[k] -= grow * longest;
+        hi[k] += grow * longest;
+      }
+      uint32_t glo[3], ghi[3];
+      grid_range(m.root, lo, hi, glo, ghi);
+      front.query().leaves_in_range(glo, ghi, leaves);
+      gather_near_front(front, leaves, near);
+    };
+    size_t applied = 0;
+    for (uint32_t f = 0; f < front.num_face_slots() && applied < 400; ++f) {
+      if (!front.alive(f)) continue;
+      gather(f, front.face(f)[0], 1.0);
+      const std::vector<uint32_t> candidates = near.vertices;
+      for (uint32_t p : candidates) {
+        gather(f, p, 0);
+        RemovalBlocker why;
+        const bool plain = check_removal(front, f, p, near, &why) == RemovalVerdict::kValid;
+        ASSERT_EQ(check_removal(front, f, p, near, nullptr, &suspects) == RemovalVerdict::kValid, plain)
+            << name << ": face " << f << " target " << p;
+        ++checks;
+        refused_by_suspects += check_removal(front, f, p, none, nullptr, &suspects) != RemovalVerdict::kValid;
+        if (!plain) {
+          suspects.add(why);
+          continue;
+        }
+        make_removal_tet(front, m.tree, out, f, p, added, shrunk);
+        ++applied;
+        break;
+      }
+    }
+    for (uint32_t g : suspects.faces) stale += !front.alive(g);
+    EXPECT_GT(applied, 100u) << name;
+  }
+  EXPECT_GT(checks, 1000u);
+  EXPECT_GT(refused_by_suspects, 100u);
+  EXPECT_GT(stale, 10u);
+}
+
 }  // namespace
 }  // namespace partet::test
