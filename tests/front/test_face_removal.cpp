@@ -71,6 +71,28 @@ void expect_valid(const Meshing& m, const TetMesh& out, size_t faces_left, const
   }
 }
 
+// near = the front over the leaves that meet the box of the tet (face f,
+// apex p) grown by `grow` times its longest side.
+void gather_around(const Meshing& m, const Front& front, uint32_t f, uint32_t p, double grow,
+                   std::vector<size_t>& leaves, NearFront& near) {
+  const uint32_t* t = front.face(f);
+  const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(p)};
+  double lo[3], hi[3], longest = 0;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min({q[0][k], q[1][k], q[2][k], q[3][k]});
+    hi[k] = std::max({q[0][k], q[1][k], q[2][k], q[3][k]});
+    longest = std::max(longest, hi[k] - lo[k]);
+  }
+  for (int k = 0; k < 3; ++k) {
+    lo[k] -= grow * longest;
+    hi[k] += grow * longest;
+  }
+  uint32_t glo[3], ghi[3];
+  grid_range(m.root, lo, hi, glo, ghi);
+  front.query().leaves_in_range(glo, ghi, leaves);
+  gather_near_front(front, leaves, near);
+}
+
 SurfaceMesh tet_surface() {
   SurfaceMesh s;
   s.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
@@ -251,12 +273,15 @@ TEST(FrontRemoval, CompactionChangesNoTet) {
 // Soundness of still_blocked, on real fronts as tets are applied: every
 // failed removal (f, p) whose blocker still_blocked keeps must fail again
 // when checked from scratch. Both outcomes must occur, of each kind.
-TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
+// Suspects change no verdict either: with what blocked the earlier checks
+// tested first (some of it closed by the tets applied since), every check
+// agrees with the plain one, and the suspects alone refuse many.
+TEST(FrontRemoval, StillBlockedAndSuspectsAgreeWithFreshChecks) {
   struct Failed {
     uint32_t f, p;
     RemovalBlocker why;
   };
-  size_t kept = 0, released = 0;
+  size_t kept = 0, released = 0, refused_by_suspects = 0, stale = 0;
   for (const char* name : {"joint.off", "spool.off"}) {
     Meshing m;
     prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
@@ -266,25 +291,10 @@ TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
     std::vector<size_t> leaves;
     std::vector<uint32_t> added, shrunk;
     // The front within `grow` longest edges of the tet (a, b, c, p)'s box.
-    auto gather = [&](uint32_t f, uint32_t p, double grow) {
-      const uint32_t* t = front.face(f);
-      const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(p)};
-      double lo[3], hi[3], longest = 0;
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min({q[0][k], q[1][k], q[2][k], q[3][k]});
-        hi[k] = std::max({q[0][k], q[1][k], q[2][k], q[3][k]});
-        longest = std::max(longest, hi[k] - lo[k]);
-      }
-      for (int k = 0; k < 3; ++k) {
-        lo[k] -= grow * longest;
-        hi[k] += grow * longest;
-      }
-      uint32_t glo[3], ghi[3];
-      grid_range(m.root, lo, hi, glo, ghi);
-      front.query().leaves_in_range(glo, ghi, leaves);
-      gather_near_front(front, leaves, near);
-    };
+    auto gather = [&](uint32_t f, uint32_t p, double grow) { gather_around(m, front, f, p, grow, leaves, near); };
     std::vector<Failed> failed;
+    Suspects suspects;
+    const NearFront none;
     size_t applied = 0;
     for (uint32_t f = 0; f < front.num_face_slots() && applied < 400; ++f) {
       if (!front.alive(f)) continue;
@@ -293,8 +303,13 @@ TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
       for (uint32_t p : candidates) {
         gather(f, p, 0);
         RemovalBlocker why;
-        if (check_removal(front, f, p, near, &why) != RemovalVerdict::kValid) {
+        const bool valid = check_removal(front, f, p, near, &why) == RemovalVerdict::kValid;
+        ASSERT_EQ(check_removal(front, f, p, near, nullptr, &suspects) == RemovalVerdict::kValid, valid)
+            << name << ": face " << f << " target " << p;
+        refused_by_suspects += check_removal(front, f, p, none, nullptr, &suspects) != RemovalVerdict::kValid;
+        if (!valid) {
           failed.push_back({f, p, why});
+          suspects.add(why);
           continue;
         }
         make_removal_tet(front, m.tree, out, f, p, added, shrunk);
@@ -318,12 +333,15 @@ TEST(FrontRemoval, StillBlockedRemovalsStillFail) {
       }
     }
     EXPECT_GT(applied, 100u) << name;
+    for (uint32_t g : suspects.faces) stale += !front.alive(g);
     out.xyz = front.xyz();  // the core's vertices are the front's first ones
     out.global_ids.clear();
     expect_valid(m, out, front.num_alive_faces(), name);
   }
   EXPECT_GT(kept, 1000u);
   EXPECT_GT(released, 100u);
+  EXPECT_GT(refused_by_suspects, 100u);
+  EXPECT_GT(stale, 10u);
 }
 
 // The memo's blocked records outlive a call: after a compaction (face
@@ -358,17 +376,7 @@ TEST(FrontRemoval, BlockedRecordsStaySoundAfterCompactionAndDeletions) {
           continue;
         }
         ++kept;
-        const uint32_t* t = front.face(f);
-        const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(b.target)};
-        double lo[3], hi[3];
-        for (int i = 0; i < 3; ++i) {
-          lo[i] = std::min({q[0][i], q[1][i], q[2][i], q[3][i]});
-          hi[i] = std::max({q[0][i], q[1][i], q[2][i], q[3][i]});
-        }
-        uint32_t glo[3], ghi[3];
-        grid_range(m.root, lo, hi, glo, ghi);
-        front.query().leaves_in_range(glo, ghi, leaves);
-        gather_near_front(front, leaves, near);
+        gather_around(m, front, f, b.target, 0, leaves, near);
         ASSERT_NE(check_removal(front, f, b.target, near), RemovalVerdict::kValid)
             << name << ": face " << f << " target " << b.target << " was blocked by " << verdict_name(b.why.verdict)
             << " " << b.why.entity << ", still there, and is valid now";
@@ -377,69 +385,6 @@ TEST(FrontRemoval, BlockedRecordsStaySoundAfterCompactionAndDeletions) {
   }
   EXPECT_GT(kept, 1000u);
   EXPECT_GT(dropped, 10u);
-}
-
-// Suspects change no verdict: with what blocked earlier removals tested
-// first (some of it closed by the tets applied since), every check agrees
-// with the plain one, and the suspects alone refuse many of them.
-TEST(FrontRemoval, SuspectsChangeNoVerdict) {
-  size_t checks = 0, refused_by_suspects = 0, stale = 0;
-  for (const char* name : {"joint.off", "spool.off"}) {
-    Meshing m;
-    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
-    Front front(m.initial, m.tree, m.root);
-    TetMesh out = m.core.mesh;
-    NearFront near;
-    const NearFront none;
-    Suspects suspects;
-    std::vector<size_t> leaves;
-    std::vector<uint32_t> added, shrunk;
-    auto gather = [&](uint32_t f, uint32_t p, double grow) {
-      const uint32_t* t = front.face(f);
-      const double* q[4] = {front.point(t[0]), front.point(t[1]), front.point(t[2]), front.point(p)};
-      double lo[3], hi[3], longest = 0;
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min({q[0][k], q[1][k], q[2][k], q[3][k]});
-        hi[k] = std::max({q[0][k], q[1][k], q[2][k], q[3][k]});
-        longest = std::max(longest, hi[k] - lo[k]);
-      }
-      for (int k = 0; k < 3; ++k) {
-        lo[k] -= grow * longest;
-        hi[k] += grow * longest;
-      }
-      uint32_t glo[3], ghi[3];
-      grid_range(m.root, lo, hi, glo, ghi);
-      front.query().leaves_in_range(glo, ghi, leaves);
-      gather_near_front(front, leaves, near);
-    };
-    size_t applied = 0;
-    for (uint32_t f = 0; f < front.num_face_slots() && applied < 400; ++f) {
-      if (!front.alive(f)) continue;
-      gather(f, front.face(f)[0], 1.0);
-      const std::vector<uint32_t> candidates = near.vertices;
-      for (uint32_t p : candidates) {
-        gather(f, p, 0);
-        RemovalBlocker why;
-        const bool plain = check_removal(front, f, p, near, &why) == RemovalVerdict::kValid;
-        ASSERT_EQ(check_removal(front, f, p, near, nullptr, &suspects) == RemovalVerdict::kValid, plain)
-            << name << ": face " << f << " target " << p;
-        ++checks;
-        refused_by_suspects += check_removal(front, f, p, none, nullptr, &suspects) != RemovalVerdict::kValid;
-        if (!plain) {
-          suspects.add(why);
-          continue;
-        }
-        make_removal_tet(front, m.tree, out, f, p, added, shrunk);
-        ++applied;
-        break;
-      }
-    }
-    for (uint32_t g : suspects.faces) stale += !front.alive(g);
-    EXPECT_GT(applied, 100u) << name;
-  }
-  EXPECT_GT(checks, 1000u);
-  EXPECT_GT(refused_by_suspects, 100u);
-  EXPECT_GT(stale, 10u);
 }
 
 }  // namespace
