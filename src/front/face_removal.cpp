@@ -15,6 +15,7 @@
 #include "octree/range_query.hpp"
 
 namespace partet {
+
 namespace {
 
 constexpr uint32_t kNeverFailed = std::numeric_limits<uint32_t>::max();
@@ -374,16 +375,6 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
       counts_.foreign_faces += foreign_[f];
     }
   return counts_;
-}
-
-}  // namespace
-
-namespace {
-
-// The blocking entity of `why` is a face slot (else a vertex, or none).
-bool blocked_by_face(const RemovalBlocker& why) {
-  return why.verdict == RemovalVerdict::kDuplicateFace || why.verdict == RemovalVerdict::kEdgeCrossesFace ||
-         why.verdict == RemovalVerdict::kFaceCrossesEdge;
 }
 
 }  // namespace

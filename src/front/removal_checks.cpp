@@ -126,7 +126,7 @@ RemovalVerdict blocked(RemovalBlocker* why, RemovalVerdict verdict, uint32_t ent
 void Suspects::add(const RemovalBlocker& why) {
   std::vector<uint32_t>* list = nullptr;
   if (why.verdict == RemovalVerdict::kVertexInside) list = &vertices;
-  if (why.verdict == RemovalVerdict::kEdgeCrossesFace || why.verdict == RemovalVerdict::kFaceCrossesEdge) list = &faces;
+  if (blocked_by_face(why) && why.verdict != RemovalVerdict::kDuplicateFace) list = &faces;
   if (list && std::find(list->begin(), list->end(), why.entity) == list->end()) list->push_back(why.entity);
 }
 

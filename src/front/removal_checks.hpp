@@ -71,6 +71,13 @@ struct RemovalBlocker {
   uint32_t entity = 0;
 };
 
+// The blocking entity of `why` is a face slot (a duplicated or crossing
+// face), else a vertex or none.
+inline bool blocked_by_face(const RemovalBlocker& why) {
+  return why.verdict == RemovalVerdict::kDuplicateFace || why.verdict == RemovalVerdict::kEdgeCrossesFace ||
+         why.verdict == RemovalVerdict::kFaceCrossesEdge;
+}
+
 // Front entities to test before the near front, e.g. what blocked the
 // other targets of the same face: the far targets of a long face are
 // mostly blocked by the same few faces, which a scan of its whole
