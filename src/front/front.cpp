@@ -37,7 +37,7 @@ float float_above(double x) {
 
 }  // namespace
 
-uint64_t Front::TripleTraits::hash(const Triple& k) { return hash_mix((uint64_t{k.a} << 32 | k.b) ^ hash_mix(k.c)); }
+uint64_t Front::TripleTraits::hash(const Triple& k) { return hash_triple(k.a, k.b, k.c); }
 
 Front::Triple Front::sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
   sort3(a, b, c);

@@ -115,7 +115,7 @@ std::vector<uint8_t> TetTopology::boundary_vertices() const {
 }
 
 uint32_t TetTopology::FaceMatch::hash(const FaceKey& key) {
-  return static_cast<uint32_t>(hash_mix((uint64_t{key[0]} << 32 | key[1]) ^ hash_mix(key[2])));
+  return static_cast<uint32_t>(hash_triple(key[0], key[1], key[2]));
 }
 
 TetTopology::FaceMatch* TetTopology::find_match(const FaceKey& key) {
