@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "core/predicates.hpp"
 #include "front/removal_checks.hpp"
 #include "octree/range_query.hpp"
+#include "octree/sizing.hpp"
 
 namespace partet {
 
@@ -27,6 +29,17 @@ constexpr size_t kCappedTargets = 8;
 constexpr size_t kFullTargets = 64;
 // See Remover::run: a productive pass makes a tet per this many waiting faces.
 constexpr size_t kProductive = 4;
+
+// The queue's size classes: the bits of a positive double's exponent and
+// its first mantissa bit, which grow with it; one class spans a factor
+// √2 of squared length (2^(1/4) of length).
+constexpr int kSizeClassShift = 51;
+
+uint64_t size_class(double squared_length) {
+  uint64_t bits;
+  std::memcpy(&bits, &squared_length, sizeof bits);
+  return bits >> kSizeClassShift;
+}
 
 struct Target {
   double score;
@@ -84,11 +97,16 @@ class Remover {
   RemovalMemo& memo_;
   RemovalCounts counts_;
 
-  // Min-heap of (size, face): the smallest faces are removed first.
+  // Min-heap of (size class, centroid key, face): the smallest faces are
+  // removed first, and faces of one size class in Morton order.
   struct Queued {
-    double size;
+    uint64_t size_class;
+    uint64_t key;
     uint32_t face;
-    bool operator>(const Queued& o) const { return size != o.size ? size > o.size : face > o.face; }
+    bool operator>(const Queued& o) const {
+      if (size_class != o.size_class) return size_class > o.size_class;
+      return key != o.key ? key > o.key : face > o.face;
+    }
   };
   std::vector<Queued> queue_;
   void push(uint32_t f);
@@ -205,7 +223,11 @@ void Remover::push(uint32_t f) {
   const uint32_t* t = front_.face(f);
   const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
   const double size = std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])});
-  queue_.push_back({size, f});
+  double centroid[3];
+  for (int k = 0; k < 3; ++k) centroid[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
+  uint32_t cell[3];
+  grid_cell(root_, centroid, cell);
+  queue_.push_back({size_class(size), morton_key(cell[0], cell[1], cell[2]), f});
   std::push_heap(queue_.begin(), queue_.end(), std::greater<Queued>());
 }
 

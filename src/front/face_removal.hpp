@@ -27,9 +27,14 @@
 //    front), so the check would fail again. A third of the checks on the
 //    corpus were such repeats; the tets made are the same.
 //
-// Order and progress. Faces wait in a min-heap by longest edge (smallest
-// first, ties by index), seeded with the alive faces; faces made by
-// removals join it. A pass empties the heap. In a capped pass a face tries
+// Order and progress. Faces wait in a min-heap by longest edge, smallest
+// first, in size classes of a factor 2^(1/4) in length; within a class by
+// the Morton key of the centroid's grid cell, then by index. The heap is
+// seeded with the alive faces; faces made by removals join it. The classes
+// keep the removals' memory accesses local: exact lengths order faces of
+// nearly equal size (most of them, on a refined surface) at random over
+// the body, and on large fronts the cache misses cost a third of the
+// step (docs/decisions.md, "Face queue in Morton order"). A pass empties the heap. In a capped pass a face tries
 // its best few targets; a face that finds no valid one waits for the next
 // pass, and is retried there only when one of its neighbourhood leaves
 // changed since it failed (its answer depends on nothing else). A capped

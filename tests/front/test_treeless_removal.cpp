@@ -145,27 +145,27 @@ TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   EXPECT_EQ(closed.faces_left, 0u);
 }
 
-// part refined twice with stall_rounds 1: the default strategy stalls
-// (192 faces left) and so does kUndoOvergrowth; the call restarts from its
-// starting state each time and kConeFirst closes it, into a mesh partet
-// check's validator passes (mesh_surface). With one rescue allowed both
-// attempts fail: the call keeps the one that left the fewer faces, at most
-// what the default alone leaves, as a valid partial mesh.
+// joint refined once with stall_rounds 1: the default strategy stalls
+// (530 faces left) and so do kUndoOvergrowth and kConeFirst; the call
+// restarts from its starting state each time and kSmallCavities closes it,
+// into a mesh partet check's validator passes (mesh_surface). With one
+// rescue allowed both attempts fail: the call keeps the one that left the
+// fewer faces, at most what the default alone leaves, as a valid partial
+// mesh.
 TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
-  const SurfaceMesh part = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/part.off"))));
+  const SurfaceMesh joint = refine_midpoints(read_surface_file(data_path("good/joint.off")));
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
-  const Meshed rescued = mesh_surface(part, "good/part.off r2, stall 1", impatient);
+  const Meshed rescued = mesh_surface(joint, "good/joint.off r1, stall 1", impatient);
   EXPECT_EQ(rescued.faces_left, 0u);
-  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kConeFirst);
-  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 3u);
-  EXPECT_GT(rescued.counts.faces_left_by_attempt[0], 0u);
-  EXPECT_GT(rescued.counts.faces_left_by_attempt[1], 0u);
+  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kSmallCavities);
+  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 4u);
+  for (size_t i = 0; i < 3; ++i) EXPECT_GT(rescued.counts.faces_left_by_attempt[i], 0u);
 
   impatient.rescues = 1;
-  const Meshed best = mesh_surface(part, "good/part.off r2, stall 1, one rescue", impatient);
+  const Meshed best = mesh_surface(joint, "good/joint.off r1, stall 1, one rescue", impatient);
   impatient.rescues = 0;
-  const Meshed alone = mesh_surface(part, "good/part.off r2, stall 1, no rescue", impatient);
+  const Meshed alone = mesh_surface(joint, "good/joint.off r1, stall 1, no rescue", impatient);
   ASSERT_EQ(best.counts.faces_left_by_attempt.size(), 2u);
   EXPECT_GT(best.faces_left, 0u);
   EXPECT_EQ(best.faces_left, std::min(best.counts.faces_left_by_attempt[0], best.counts.faces_left_by_attempt[1]));
