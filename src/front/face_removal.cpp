@@ -8,6 +8,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
@@ -104,8 +105,7 @@ class Remover {
     uint64_t key;
     uint32_t face;
     bool operator>(const Queued& o) const {
-      if (size_class != o.size_class) return size_class > o.size_class;
-      return key != o.key ? key > o.key : face > o.face;
+      return std::tie(size_class, key, face) > std::tie(o.size_class, o.key, o.face);
     }
   };
   std::vector<Queued> queue_;
