@@ -3,6 +3,7 @@
 #include "optimize/insertion.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numbers>
 #include <vector>
@@ -25,6 +26,16 @@ constexpr double kSliverAngle = 10;
 // The mesh's worst tet with an angle under this many degrees is all but
 // flat: lifting it pays even when more of the new tets are slivers.
 constexpr double kDegenerateAngle = 1;
+// The mesh's worst tet with an angle under this many degrees may give way
+// to tets with one more sliver among them, when the smallest angle rises.
+constexpr double kTradeAngle = 5;
+// Step 6's cavity grows at most this many times, and no further once it
+// has more than this many tets.
+constexpr int kGrowRounds = 6;
+constexpr size_t kGrowTets = 96;
+// Outer faces nearer the kernel's deepest point than this many times its
+// depth hold it down: step 6 grows across them.
+constexpr double kTight = 2;
 
 // `items` sorted, duplicates dropped: membership by binary search (a
 // cavity around a tet's four vertices has about 70 tets).
@@ -47,17 +58,20 @@ double quality_of(const TetTopology& topo, const uint32_t* v) {
 
 // min_angle_no_worse for the tets in slots `created` against `old_tets`.
 bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& old_tets,
-                         const std::vector<uint32_t>& created) {
+                         const std::vector<uint32_t>& created, int extra_slivers) {
   std::vector<uint32_t> quads;
   topo.tet_vertices(created, quads);
-  return min_angle_no_worse(topo, old_tets, quads);
+  const AngleSummary before = summarize_angles(topo, old_tets), after = summarize_angles(topo, quads);
+  if (extra_slivers > 0 && after.smallest >= 2 * before.smallest) extra_slivers = 3;
+  return after.no_worse_than(before, extra_slivers);
 }
 
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
 // With `settled` (p is already a good place, e.g. a kernel's deepest
 // point), a cone no better than the cavity before smoothing is not tried.
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
-                SmoothingScratch& scratch, InsertionRule rule, bool settled = false) {
+                SmoothingScratch& scratch, InsertionRule rule, bool settled = false,
+                CavityGrowth* growth = nullptr) {
   std::vector<uint32_t> old_tets, new_tets, created;
   const std::vector<uint32_t> members = sorted_copy(cavity);
   double old_quality = std::numeric_limits<double>::infinity();
@@ -83,13 +97,17 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
       new_tets.insert(new_tets.end(), tet, tet + 4);
     }
   }
-  // A vertex inside the cavity (on no outer face) would vanish: not here.
+  // A vertex inside the cavity (on no outer face) would vanish: only a free
+  // one, and only with `growth` (whose flags say which are free).
   const std::vector<uint32_t> kept = sorted_copy(new_tets);
+  std::vector<uint32_t> vanished;
   for (uint32_t u : old_tets) {
-    if (!std::binary_search(kept.begin(), kept.end(), u)) {
+    if (std::binary_search(kept.begin(), kept.end(), u)) continue;
+    if (!growth || (u < growth->frozen.size() && growth->frozen[u])) {
       topo.remove_last_vertex();
       return false;
     }
+    vanished.push_back(u);
   }
   if (settled) {
     double start = std::numeric_limits<double>::infinity();
@@ -111,13 +129,18 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   // or a tet under 10 degrees gives way to tets all above (kShortfall), or
   // the smallest dihedral angle does not drop and the tets with one under
   // 10 degrees do not grow in number, or the worst tet was under
-  // kDegenerateAngle (kWorstFirst).
+  // kDegenerateAngle, or under kTradeAngle with one more sliver at most
+  // (kWorstFirst).
   const double ten = quality_of_angle(kSliverAngle);
   const bool pays = rule == InsertionRule::kShortfall
                         ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
                         : old_quality < quality_of_angle(kDegenerateAngle) ||
-                              new_angles_no_worse(topo, old_tets, created);
-  if (new_quality > old_quality && pays) return true;
+                              new_angles_no_worse(topo, old_tets, created,
+                                                  old_quality < quality_of_angle(kTradeAngle) ? 1 : 0);
+  if (new_quality > old_quality && pays) {
+    if (growth) growth->vertices_removed += sorted_copy(vanished).size();
+    return true;
+  }
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);
   topo.remove_last_vertex();
@@ -166,6 +189,130 @@ bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, Sm
                                rule);
 }
 
+// Distance from p to the plane of face f of tet t (doubles: it only
+// steers which tets a cavity takes in).
+double plane_distance(const TetTopology& topo, uint32_t t, int f, const double* p) {
+  const double* q[3];
+  int n = 0;
+  for (int k = 0; k < 4; ++k)
+    if (k != f) q[n++] = topo.point(topo.tet(t)[k]);
+  double u[3], w[3], d[3];
+  for (int i = 0; i < 3; ++i) {
+    u[i] = q[1][i] - q[0][i];
+    w[i] = q[2][i] - q[0][i];
+    d[i] = p[i] - q[0][i];
+  }
+  const double nx = u[1] * w[2] - u[2] * w[1], ny = u[2] * w[0] - u[0] * w[2], nz = u[0] * w[1] - u[1] * w[0];
+  const double norm = std::sqrt(nx * nx + ny * ny + nz * nz);
+  return norm > 0 ? std::abs(nx * d[0] + ny * d[1] + nz * d[2]) / norm : 0;
+}
+
+// The outer faces of `cavity` whose cone to p is not positive or no
+// better than `worst`: the tets behind them go to `join`; false when one of
+// them is a boundary face (no tet behind it). `bad` tells whether any was.
+bool blocking_faces(const TetTopology& topo, const std::vector<uint32_t>& members, const double* p, double worst,
+                    std::vector<uint32_t>& join, bool& bad) {
+  join.clear();
+  bad = false;
+  for (uint32_t c : members)
+    for (int f = 0; f < 4; ++f) {
+      const uint32_t code = 4 * c + f;
+      if (!outer_face(topo, members, code)) continue;
+      const double* q[4];
+      for (int k = 0; k < 4; ++k) q[k] = k == f ? p : topo.point(topo.tet(c)[k]);
+      if (orient3d(q[0], q[1], q[2], q[3]) > 0 && tet_quality(q[0], q[1], q[2], q[3]) > worst) continue;
+      bad = true;
+      if (topo.twin(code) == TetTopology::kNone) return false;
+      join.push_back(topo.twin(code) / 4);
+    }
+  join = sorted_copy(join);
+  return true;
+}
+
+double worst_quality(const TetTopology& topo, const std::vector<uint32_t>& cavity) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (uint32_t c : cavity) worst = std::min(worst, topo.quality(c));
+  return worst;
+}
+
+// The point `scale` times a regular tet's height (0.816 times the edge of
+// an equilateral triangle of the same area) above the middle of face f of
+// tet t, on the side of t's corner f; false for a face of no area.
+bool point_above_face(const TetTopology& topo, uint32_t t, int f, double scale, double* p) {
+  const double* q[3];
+  int n = 0;
+  for (int k = 0; k < 4; ++k)
+    if (k != f) q[n++] = topo.point(topo.tet(t)[k]);
+  double middle[3], u[3], w[3];
+  for (int i = 0; i < 3; ++i) {
+    middle[i] = (q[0][i] + q[1][i] + q[2][i]) / 3;
+    u[i] = q[1][i] - q[0][i];
+    w[i] = q[2][i] - q[0][i];
+  }
+  const double normal[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const double twice_area = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if (!(twice_area > 0)) return false;
+  const double* corner = topo.point(topo.tet(t)[f]);
+  double side = 0;
+  for (int i = 0; i < 3; ++i) side += normal[i] * (corner[i] - middle[i]);
+  const double edge = std::sqrt(2 * twice_area / std::sqrt(3.0));
+  const double step = scale * 0.816 * edge * (side < 0 ? -1 : 1) / twice_area;
+  for (int i = 0; i < 3; ++i) p[i] = middle[i] + step * normal[i];
+  return true;
+}
+
+// Step 6 (for the mesh's worst tet, with the frozen flags): a cavity grown
+// from the tet toward a point p with room, until every outer face's cone to
+// p is positive and beats the cavity's worst tet; then p is tried
+// (try_cavity, which lets free vertices the cavity swallows vanish). First
+// p is the deepest point of the kernel of the tet and its face neighbours,
+// the cavity growing across the faces that hold it down (bad cones, and
+// faces about as near as the deepest) and the point found again; then, for
+// a tet on the boundary, p is fixed above the middle of its boundary face
+// (a flat tet over nearly coplanar surface triangles, whose kernel stays
+// thin as it grows along the surface).
+bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& scratch, InsertionRule rule,
+                 CavityGrowth& growth) {
+  std::vector<uint32_t> start = {t}, join;
+  for (int f = 0; f < 4; ++f)
+    if (topo.twin(4 * t + f) != TetTopology::kNone) start.push_back(topo.twin(4 * t + f) / 4);
+  std::vector<uint32_t> cavity = start;
+  bool bad = false;
+  for (int round = 0; round < kGrowRounds && cavity.size() <= kGrowTets; ++round) {
+    const KernelPoint deep = deepest_kernel_point(outer_faces(topo, cavity));
+    if (!deep.found) break;
+    const std::vector<uint32_t> members = sorted_copy(cavity);
+    if (!blocking_faces(topo, members, deep.point, worst_quality(topo, cavity), join, bad)) break;
+    if (!bad) {
+      if (try_cavity(topo, cavity, deep.point, bar, scratch, rule, false, &growth)) return true;
+      break;
+    }
+    for (uint32_t c : members)
+      for (int f = 0; f < 4; ++f)
+        if (outer_face(topo, members, 4 * c + f) && topo.twin(4 * c + f) != TetTopology::kNone &&
+            plane_distance(topo, c, f, deep.point) <= kTight * std::max(deep.depth, 0.0))
+          join.push_back(topo.twin(4 * c + f) / 4);
+    join = sorted_copy(join);
+    cavity.insert(cavity.end(), join.begin(), join.end());
+  }
+  for (int f = 0; f < 4; ++f) {
+    double p[3];
+    for (double scale : {1.0, 0.5}) {
+      if (topo.twin(4 * t + f) != TetTopology::kNone || !point_above_face(topo, t, f, scale, p)) break;
+      cavity = start;
+      for (int round = 0; round < 2 * kGrowRounds && cavity.size() <= kGrowTets; ++round) {
+        if (!blocking_faces(topo, sorted_copy(cavity), p, worst_quality(topo, cavity), join, bad)) break;
+        if (!bad) {
+          if (try_cavity(topo, cavity, p, bar, scratch, rule, false, &growth)) return true;
+          break;
+        }
+        cavity.insert(cavity.end(), join.begin(), join.end());
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets) {
@@ -187,7 +334,8 @@ bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_t
 
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
 
-bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch, InsertionRule rule) {
+bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch, InsertionRule rule,
+                   CavityGrowth* growth) {
   const uint32_t* v = topo.tet(t);
   double centroid[3];
   for (int i = 0; i < 3; ++i)
@@ -219,15 +367,19 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     // A vertex of t off the boundary has its whole star in that cavity, on
     // none of its outer faces: it would vanish, and the cavity is not used.
     std::vector<uint32_t> wider = cavity, star;
-    for (int k = 0; k < 4; ++k) {
+    bool open = true;
+    for (int k = 0; k < 4 && open; ++k) {
       const uint32_t corner = topo.tet(t)[k];
       topo.vertex_star(corner, star);
-      if (!on_open_face(topo, corner, star)) return false;
+      open = on_open_face(topo, corner, star);
       for (uint32_t s : star)
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
-    const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
-    return deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, rule, true);
+    if (open) {
+      const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
+      if (deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, rule, true)) return true;
+    }
+    return growth && grow_cavity(topo, t, bar, scratch, rule, *growth);
   }
   return try_cavity(topo, {t}, centroid, bar, scratch, rule);
 }

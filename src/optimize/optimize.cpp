@@ -247,6 +247,7 @@ size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_
 void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& options,
                       const std::vector<uint8_t>& frozen, OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star, neighbours;
+  CavityGrowth growth{frozen};
   const auto free_vertex = [&](uint32_t v) { return !(v < frozen.size() && frozen[v]); };
   // Smooths free vertex v, kept only when its star's angles get no worse.
   const auto guarded_smooth = [&](uint32_t v) {
@@ -279,7 +280,8 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
       }
     }
     if (!changed && options.insert_vertices &&
-        insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst)) {
+        insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst,
+                      options.grow_cavities ? &growth : nullptr)) {
       ++stats.vertices_inserted;
       changed = true;
     }
@@ -317,6 +319,7 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
     }
     if (!changed) break;
   }
+  stats.vertices_removed += growth.vertices_removed;
 }
 
 // Step 3 of a pass; the number of vertices moved.

@@ -11,8 +11,9 @@
 // tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
 // a rank boundary shares). Boundary faces keep their three vertices and
 // their side. Inserted vertices are appended to xyz (and to global_ids
-// when the mesh has them) and collapsed ones (collapse.hpp) stay in xyz
-// with no tet, so existing indices stay; callers drop the unused ones
+// when the mesh has them); collapsed ones (collapse.hpp) and those a grown
+// cavity takes in (insertion.hpp, step 6) stay in xyz with no tet, so
+// existing indices stay; callers drop the unused ones
 // (drop_unused_vertices) when they need a compact mesh. Every change keeps every tet
 // positive by exact orient3d and strictly raises the worst quality of the
 // tets it replaces or moves (a relaxation keeps it and raises the radius
@@ -40,6 +41,9 @@ struct OptimizeOptions {
   // In the worst-tet rounds, when nothing else moves the worst tet, smooth
   // the free vertices around its own first.
   bool smooth_around_worst = true;
+  // In the worst-tet rounds, when the insertion's fixed cavities fail,
+  // grow one toward room (insertion.hpp, step 6).
+  bool grow_cavities = true;
   bool multi_face_sweep = true;  // multi-face removals after the passes
   int relaxation_sweeps = 2;     // radius-ratio relaxation sweeps at the end
   // Rounds on the mesh's worst tet after the passes (flip, insert, smooth
@@ -56,6 +60,7 @@ struct OptimizeStats {
   size_t multi_face_removals = 0;  // polygons of 2 to 5 sandwiched faces
   size_t vertices_inserted = 0;
   size_t vertices_collapsed = 0;
+  size_t vertices_removed = 0;  // free vertices a grown cavity took in (insertion.hpp, step 6)
   size_t vertices_moved = 0;
   size_t vertices_relaxed = 0;  // moves of the radius-ratio relaxation
   int passes = 0;  // passes run

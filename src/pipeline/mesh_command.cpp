@@ -600,7 +600,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           o.passes = options.optimize_passes;
           o.quality_target_deg = options.quality_target;
           OptimizeStats n = optimize_mesh(s.mesh, o);
-          if (n.vertices_collapsed > 0) drop_unused_vertices(s.mesh);
+          if (n.vertices_collapsed + n.vertices_removed > 0) drop_unused_vertices(s.mesh);
           ojson c;
           for (const auto& [when, q] : {std::pair{"before", n.before}, std::pair{"after", n.after}}) {
             const double tets = static_cast<double>(std::max<size_t>(q.tets, 1));
@@ -616,6 +616,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["multi-face removals"] = n.multi_face_removals;
           c["vertices inserted"] = n.vertices_inserted;
           c["vertices collapsed"] = n.vertices_collapsed;
+          c["vertices removed"] = n.vertices_removed;
           c["vertices moved"] = n.vertices_moved;
           c["vertices relaxed"] = n.vertices_relaxed;
           c["passes"] = n.passes;

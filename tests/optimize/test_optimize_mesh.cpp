@@ -81,8 +81,9 @@ TEST_P(OptimizeCorpus, ValidSameBoundaryNoWorse) {
   if (c.against_surface && finished) surface = read_surface_file(data_path(c.surface));
   ValidationResult r = validate_mesh(mesh, surface ? &*surface : nullptr);
   EXPECT_TRUE(r.valid) << format_text(r);
-  // Only the collapsed vertices are left unused.
-  EXPECT_EQ(r.unused_vertices, validate_mesh(original, nullptr).unused_vertices + stats.vertices_collapsed);
+  // Only the collapsed and removed vertices are left unused.
+  EXPECT_EQ(r.unused_vertices,
+            validate_mesh(original, nullptr).unused_vertices + stats.vertices_collapsed + stats.vertices_removed);
   EXPECT_EQ(boundary_faces(mesh), boundary_faces(original));
   ASSERT_GE(mesh.num_vertices(), original.num_vertices());
   for (size_t v = 0; v < original.num_vertices(); ++v) {
@@ -302,15 +303,17 @@ TEST(OptimizeMesh, WorstTetRoundsLiftTheSmallestAngle) {
   EXPECT_NEAR(compare_options("good/cube.off", no_rounds).on.after.min_dihedral_deg, 45, 0.01);
   // Where the worst tets are forced by the surface, the rounds must not
   // trade a wide angle for a smaller smallest one, nor add slivers unless
-  // they lift a smallest angle under 1 degree (insertion.hpp, kWorstFirst).
+  // they lift a smallest angle under 5 degrees (insertion.hpp, kWorstFirst).
   for (const char* name : {"good/part.off", "good/joint.off", "good/pipe.off", "good/dragknob.off"}) {
     const Comparison c = compare_options(name, no_rounds);
     EXPECT_GE(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
-    if (c.off.after.min_dihedral_deg < 1)
+    if (c.off.after.min_dihedral_deg < 1) {
       EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
-    else
-      EXPECT_LE(c.on.after.dihedral_under_10 * c.off.after.tets, c.off.after.dihedral_under_10 * c.on.after.tets)
-          << name;
+    }
+    if (c.on.after.dihedral_under_10 * c.off.after.tets > c.off.after.dihedral_under_10 * c.on.after.tets) {
+      EXPECT_LT(c.off.after.min_dihedral_deg, 5) << name;
+      EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
+    }
     EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
   }
   // joint's smallest angle sits between surface vertices on a thin wall:
@@ -318,6 +321,20 @@ TEST(OptimizeMesh, WorstTetRoundsLiftTheSmallestAngle) {
   const Comparison joint = compare_options("good/joint.off", no_rounds);
   EXPECT_LT(joint.off.after.min_dihedral_deg, 0.5);
   EXPECT_GT(joint.on.after.min_dihedral_deg, 1.0);
+}
+
+// A cavity grown toward room (insertion.hpp, step 6) lifts worst tets the
+// fixed cavities could not: flat tets stacked on a flat patch of surface,
+// whose neighbours are flat too (cross 26.9 -> 36.9 degrees, ellipsoid
+// 20.5 -> 28.9, eight 16.3 -> 18.9 at the time of writing).
+TEST(OptimizeMesh, GrownCavitiesLiftTheSmallestAngle) {
+  for (const char* name : {"good/cross.off", "good/ellipsoid.off", "good/eight.off"}) {
+    const Comparison c = compare_options(name, [](OptimizeOptions& o) { o.grow_cavities = false; });
+    EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 1) << name;
+    EXPECT_LE(c.on.after.dihedral_under_10, c.off.after.dihedral_under_10) << name;
+    EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
+    EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original)) << name;
+  }
 }
 
 // Vertex collapse (collapse.hpp) frees interior vertices the removals left
