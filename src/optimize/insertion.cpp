@@ -27,8 +27,11 @@ constexpr double kSliverAngle = 10;
 // flat: lifting it pays even when more of the new tets are slivers.
 constexpr double kDegenerateAngle = 1;
 // The mesh's worst tet with an angle under this many degrees may give way
-// to tets with one more sliver among them, when the smallest angle rises.
+// to tets with kTradeSlivers more slivers among them when the smallest
+// angle rises, kDoublingTradeSlivers when it at least doubles.
 constexpr double kTradeAngle = 5;
+constexpr int kTradeSlivers = 1;
+constexpr int kDoublingTradeSlivers = 3;
 // Step 6's cavity grows at most this many times, and no further once it
 // has more than this many tets.
 constexpr int kGrowRounds = 6;
@@ -56,14 +59,16 @@ double quality_of(const TetTopology& topo, const uint32_t* v) {
   return tet_quality(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
 
-// min_angle_no_worse for the tets in slots `created` against `old_tets`.
+// min_angle_no_worse for the tets in slots `created` against `old_tets`;
+// with `trade`, one more sliver may come, three when the smallest angle at
+// least doubles.
 bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& old_tets,
-                         const std::vector<uint32_t>& created, int extra_slivers) {
+                         const std::vector<uint32_t>& created, bool trade) {
   std::vector<uint32_t> quads;
   topo.tet_vertices(created, quads);
   const AngleSummary before = summarize_angles(topo, old_tets), after = summarize_angles(topo, quads);
-  if (extra_slivers > 0 && after.smallest >= 2 * before.smallest) extra_slivers = 3;
-  return after.no_worse_than(before, extra_slivers);
+  const int extra = !trade ? 0 : after.smallest >= 2 * before.smallest ? kDoublingTradeSlivers : kTradeSlivers;
+  return after.no_worse_than(before, extra);
 }
 
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
@@ -135,8 +140,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   const bool pays = rule == InsertionRule::kShortfall
                         ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
                         : old_quality < quality_of_angle(kDegenerateAngle) ||
-                              new_angles_no_worse(topo, old_tets, created,
-                                                  old_quality < quality_of_angle(kTradeAngle) ? 1 : 0);
+                              new_angles_no_worse(topo, old_tets, created, old_quality < quality_of_angle(kTradeAngle));
   if (new_quality > old_quality && pays) {
     if (growth) growth->vertices_removed += sorted_copy(vanished).size();
     return true;
@@ -189,22 +193,39 @@ bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, Sm
                                rule);
 }
 
+// Face f of tet t: its three corners and its normal (the cross product of
+// two of its edges, as long as twice its area).
+struct FaceFrame {
+  const double* corner[3];
+  double normal[3];
+  double twice_area;
+};
+
+FaceFrame face_frame(const TetTopology& topo, uint32_t t, int f) {
+  FaceFrame out;
+  int n = 0;
+  for (int k = 0; k < 4; ++k)
+    if (k != f) out.corner[n++] = topo.point(topo.tet(t)[k]);
+  double u[3], w[3];
+  for (int i = 0; i < 3; ++i) {
+    u[i] = out.corner[1][i] - out.corner[0][i];
+    w[i] = out.corner[2][i] - out.corner[0][i];
+  }
+  out.normal[0] = u[1] * w[2] - u[2] * w[1];
+  out.normal[1] = u[2] * w[0] - u[0] * w[2];
+  out.normal[2] = u[0] * w[1] - u[1] * w[0];
+  out.twice_area = std::sqrt(out.normal[0] * out.normal[0] + out.normal[1] * out.normal[1] +
+                             out.normal[2] * out.normal[2]);
+  return out;
+}
+
 // Distance from p to the plane of face f of tet t (doubles: it only
 // steers which tets a cavity takes in).
 double plane_distance(const TetTopology& topo, uint32_t t, int f, const double* p) {
-  const double* q[3];
-  int n = 0;
-  for (int k = 0; k < 4; ++k)
-    if (k != f) q[n++] = topo.point(topo.tet(t)[k]);
-  double u[3], w[3], d[3];
-  for (int i = 0; i < 3; ++i) {
-    u[i] = q[1][i] - q[0][i];
-    w[i] = q[2][i] - q[0][i];
-    d[i] = p[i] - q[0][i];
-  }
-  const double nx = u[1] * w[2] - u[2] * w[1], ny = u[2] * w[0] - u[0] * w[2], nz = u[0] * w[1] - u[1] * w[0];
-  const double norm = std::sqrt(nx * nx + ny * ny + nz * nz);
-  return norm > 0 ? std::abs(nx * d[0] + ny * d[1] + nz * d[2]) / norm : 0;
+  const FaceFrame face = face_frame(topo, t, f);
+  double dot = 0;
+  for (int i = 0; i < 3; ++i) dot += face.normal[i] * (p[i] - face.corner[0][i]);
+  return face.twice_area > 0 ? std::abs(dot) / face.twice_area : 0;
 }
 
 // The outer faces of `cavity` whose cone to p is not positive or no
@@ -239,25 +260,16 @@ double worst_quality(const TetTopology& topo, const std::vector<uint32_t>& cavit
 // an equilateral triangle of the same area) above the middle of face f of
 // tet t, on the side of t's corner f; false for a face of no area.
 bool point_above_face(const TetTopology& topo, uint32_t t, int f, double scale, double* p) {
-  const double* q[3];
-  int n = 0;
-  for (int k = 0; k < 4; ++k)
-    if (k != f) q[n++] = topo.point(topo.tet(t)[k]);
-  double middle[3], u[3], w[3];
-  for (int i = 0; i < 3; ++i) {
-    middle[i] = (q[0][i] + q[1][i] + q[2][i]) / 3;
-    u[i] = q[1][i] - q[0][i];
-    w[i] = q[2][i] - q[0][i];
-  }
-  const double normal[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  const double twice_area = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-  if (!(twice_area > 0)) return false;
+  const FaceFrame face = face_frame(topo, t, f);
+  if (!(face.twice_area > 0)) return false;
+  double middle[3];
+  for (int i = 0; i < 3; ++i) middle[i] = (face.corner[0][i] + face.corner[1][i] + face.corner[2][i]) / 3;
   const double* corner = topo.point(topo.tet(t)[f]);
   double side = 0;
-  for (int i = 0; i < 3; ++i) side += normal[i] * (corner[i] - middle[i]);
-  const double edge = std::sqrt(2 * twice_area / std::sqrt(3.0));
-  const double step = scale * 0.816 * edge * (side < 0 ? -1 : 1) / twice_area;
-  for (int i = 0; i < 3; ++i) p[i] = middle[i] + step * normal[i];
+  for (int i = 0; i < 3; ++i) side += face.normal[i] * (corner[i] - middle[i]);
+  const double edge = std::sqrt(2 * face.twice_area / std::sqrt(3.0));
+  const double step = scale * 0.816 * edge * (side < 0 ? -1 : 1) / face.twice_area;
+  for (int i = 0; i < 3; ++i) p[i] = middle[i] + step * face.normal[i];
   return true;
 }
 
@@ -368,10 +380,11 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     // none of its outer faces: it would vanish, and the cavity is not used.
     std::vector<uint32_t> wider = cavity, star;
     bool open = true;
-    for (int k = 0; k < 4 && open; ++k) {
+    for (int k = 0; k < 4; ++k) {
       const uint32_t corner = topo.tet(t)[k];
       topo.vertex_star(corner, star);
       open = on_open_face(topo, corner, star);
+      if (!open) break;
       for (uint32_t s : star)
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
