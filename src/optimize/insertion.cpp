@@ -231,8 +231,9 @@ double plane_distance(const TetTopology& topo, uint32_t t, int f, const double* 
 // The outer faces of `cavity` whose cone to p is not positive or no
 // better than `worst`: the tets behind them go to `join`; false when one of
 // them is a boundary face (no tet behind it). `bad` tells whether any was.
+// Also the tets behind the outer faces whose plane is within `tight` of p.
 bool blocking_faces(const TetTopology& topo, const std::vector<uint32_t>& members, const double* p, double worst,
-                    std::vector<uint32_t>& join, bool& bad) {
+                    double tight, std::vector<uint32_t>& join, bool& bad) {
   join.clear();
   bad = false;
   for (uint32_t c : members)
@@ -241,7 +242,11 @@ bool blocking_faces(const TetTopology& topo, const std::vector<uint32_t>& member
       if (!outer_face(topo, members, code)) continue;
       const double* q[4];
       for (int k = 0; k < 4; ++k) q[k] = k == f ? p : topo.point(topo.tet(c)[k]);
-      if (orient3d(q[0], q[1], q[2], q[3]) > 0 && tet_quality(q[0], q[1], q[2], q[3]) > worst) continue;
+      if (orient3d(q[0], q[1], q[2], q[3]) > 0 && tet_quality(q[0], q[1], q[2], q[3]) > worst) {
+        if (topo.twin(code) != TetTopology::kNone && plane_distance(topo, c, f, p) <= tight)
+          join.push_back(topo.twin(code) / 4);
+        continue;
+      }
       bad = true;
       if (topo.twin(code) == TetTopology::kNone) return false;
       join.push_back(topo.twin(code) / 4);
@@ -293,18 +298,12 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
   for (int round = 0; round < kGrowRounds && cavity.size() <= kGrowTets; ++round) {
     const KernelPoint deep = deepest_kernel_point(outer_faces(topo, cavity));
     if (!deep.found) break;
-    const std::vector<uint32_t> members = sorted_copy(cavity);
-    if (!blocking_faces(topo, members, deep.point, worst_quality(topo, cavity), join, bad)) break;
+    const double tight = kTight * std::max(deep.depth, 0.0);
+    if (!blocking_faces(topo, sorted_copy(cavity), deep.point, worst_quality(topo, cavity), tight, join, bad)) break;
     if (!bad) {
       if (try_cavity(topo, cavity, deep.point, bar, scratch, rule, false, &growth)) return true;
       break;
     }
-    for (uint32_t c : members)
-      for (int f = 0; f < 4; ++f)
-        if (outer_face(topo, members, 4 * c + f) && topo.twin(4 * c + f) != TetTopology::kNone &&
-            plane_distance(topo, c, f, deep.point) <= kTight * std::max(deep.depth, 0.0))
-          join.push_back(topo.twin(4 * c + f) / 4);
-    join = sorted_copy(join);
     cavity.insert(cavity.end(), join.begin(), join.end());
   }
   for (int f = 0; f < 4; ++f) {
@@ -313,7 +312,7 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
       if (topo.twin(4 * t + f) != TetTopology::kNone || !point_above_face(topo, t, f, scale, p)) break;
       cavity = start;
       for (int round = 0; round < 2 * kGrowRounds && cavity.size() <= kGrowTets; ++round) {
-        if (!blocking_faces(topo, sorted_copy(cavity), p, worst_quality(topo, cavity), join, bad)) break;
+        if (!blocking_faces(topo, sorted_copy(cavity), p, worst_quality(topo, cavity), -1, join, bad)) break;
         if (!bad) {
           if (try_cavity(topo, cavity, p, bar, scratch, rule, false, &growth)) return true;
           break;
