@@ -1,6 +1,7 @@
 // Face removal validity checks (see removal_checks.hpp): bounding boxes
-// (exact comparisons) reject far entities cheaply, exact predicates decide
-// the rest.
+// (exact comparisons) reject far entities cheaply, then front faces
+// separated from the tet by one of its face planes (exact orientations
+// shared by the faces of a vertex), and exact predicates decide the rest.
 #include "front/removal_checks.hpp"
 
 #include <algorithm>
@@ -177,11 +178,41 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     const double* sp[3] = {front.point(sides[k][0]), front.point(sides[k][1]), front.point(sides[k][2])};
     side_box[k] = box_of(sp, 3);
   }
+  // Bit k of clear_of(x): x lies strictly outside the tet's face plane k
+  // (base, then the sides) or is one of that face's corners. A front face
+  // whose three corners share a bit meets the closed tet at most in
+  // corners or an edge of that face, which no test below reports: it is
+  // passed over. Cached per vertex for this check.
+  if (near.vertex_check.size() < front.num_vertices()) {
+    near.vertex_check.resize(front.num_vertices(), 0);
+    near.vertex_clear.resize(front.num_vertices(), 0);
+  }
+  if (++near.check == 0) {
+    std::fill(near.vertex_check.begin(), near.vertex_check.end(), 0);
+    near.check = 1;
+  }
+  const uint32_t planes[4][3] = {{a, c, b}, {b, c, p}, {a, p, c}, {a, b, p}};
+  auto clear_of = [&](uint32_t x) -> uint8_t {
+    if (near.vertex_check[x] == near.check) return near.vertex_clear[x];
+    uint8_t mask = 0;
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t* q = planes[k];
+      if (x == q[0] || x == q[1] || x == q[2] ||
+          (x != a && x != b && x != c && x != p &&
+           orient3d(front.point(q[0]), front.point(q[1]), front.point(q[2]), front.point(x)) > 0))
+        mask |= static_cast<uint8_t>(1u << k);
+    }
+    near.vertex_check[x] = near.check;
+    near.vertex_clear[x] = mask;
+    return mask;
+  };
+
   // The verdict face g gives, with the index of the edge or side it blocks.
   auto crossing = [&](uint32_t g, int& index) {
     const float* face_box = front.face_box(g);
     if (!meets_float_box(tet_box, face_box)) return RemovalVerdict::kValid;
     const uint32_t* t = front.face(g);
+    if ((clear_of(t[0]) & clear_of(t[1]) & clear_of(t[2])) != 0) return RemovalVerdict::kValid;
     for (int k = 0; k < 3; ++k) {
       if (!new_edge[k] || !meets_float_box(edge_box[k], face_box)) continue;
       index = k;

@@ -41,6 +41,12 @@ struct NearFront {
   std::vector<uint32_t> vertices;    // front vertices, in leaf order
   std::vector<uint32_t> face_mark;   // per face slot: the gather that last took it
   uint32_t gather = 0;
+  // check_removal's scratch, per front vertex: the check that last
+  // classified it against the tet's four face planes, and the planes it is
+  // clear of (see check_removal).
+  mutable std::vector<uint32_t> vertex_check;
+  mutable std::vector<uint8_t> vertex_clear;
+  mutable uint32_t check = 0;
 };
 
 // Replaces `near` with the faces listed in `leaves` (Front's leaf index)
