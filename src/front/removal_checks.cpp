@@ -159,25 +159,6 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
   const double* corners[4] = {pa, pb, pc, pp};
   const Box tet_box = box_of(corners, 4);
 
-  // (i) Front vertices in the closed tet.
-  auto inside = [&](uint32_t v) {
-    if (v == a || v == b || v == c || v == p) return false;
-    const double* q = front.point(v);
-    return point_in_box(q, tet_box) && orient3d(pa, pc, pb, q) <= 0 && orient3d(pb, pc, pp, q) <= 0 &&
-           orient3d(pa, pp, pc, q) <= 0 && orient3d(pa, pb, pp, q) <= 0;
-  };
-
-  // (ii) New edges against front faces, (iii) new faces against front
-  // edges; only faces whose box meets the tet's box matter for either.
-  const bool any_new_edge = new_edge[0] || new_edge[1] || new_edge[2];
-  const bool any_new_side = new_side[0] || new_side[1] || new_side[2];
-  Box edge_box[3], side_box[3];
-  for (int k = 0; k < 3; ++k) {
-    const double* e[2] = {pp, front.point(ends[k])};
-    edge_box[k] = box_of(e, 2);
-    const double* sp[3] = {front.point(sides[k][0]), front.point(sides[k][1]), front.point(sides[k][2])};
-    side_box[k] = box_of(sp, 3);
-  }
   // Bit k of clear_of(x): x lies strictly outside the tet's face plane k
   // (base, then the sides) or is one of that face's corners. A front face
   // whose three corners share a bit meets the closed tet at most in
@@ -207,6 +188,23 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     return mask;
   };
 
+  // (i) Front vertices in the closed tet: clear of no face plane.
+  auto inside = [&](uint32_t v) {
+    if (v == a || v == b || v == c || v == p) return false;
+    return point_in_box(front.point(v), tet_box) && clear_of(v) == 0;
+  };
+
+  // (ii) New edges against front faces, (iii) new faces against front
+  // edges; only faces whose box meets the tet's box matter for either.
+  const bool any_new_edge = new_edge[0] || new_edge[1] || new_edge[2];
+  const bool any_new_side = new_side[0] || new_side[1] || new_side[2];
+  Box edge_box[3], side_box[3];
+  for (int k = 0; k < 3; ++k) {
+    const double* e[2] = {pp, front.point(ends[k])};
+    edge_box[k] = box_of(e, 2);
+    const double* sp[3] = {front.point(sides[k][0]), front.point(sides[k][1]), front.point(sides[k][2])};
+    side_box[k] = box_of(sp, 3);
+  }
   // The verdict face g gives, with the index of the edge or side it blocks.
   auto crossing = [&](uint32_t g, int& index) {
     const float* face_box = front.face_box(g);
