@@ -11,7 +11,8 @@
 //     30 degrees, whichever is lower, in index order (inserted vertices
 //     are free).
 // After the passes, one sweep of multi-face removals (multi_face_pass),
-// rounds on the mesh's worst tet (worst_tet_rounds), then the relaxation
+// rounds on the mesh's worst tet (worst_tet_rounds, with joint smoothing
+// of tied worst tets: joint_smoothing.hpp), then the relaxation
 // sweeps (relaxation_sweep, two by default). Each
 // change of the passes strictly raises the ascending sequence of tet
 // qualities in lexicographic order; with the caps this bounds the work.
@@ -27,6 +28,7 @@
 #include "optimize/collapse.hpp"
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
+#include "optimize/joint_smoothing.hpp"
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
@@ -234,10 +236,58 @@ size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_
   return stats.vertices_inserted + stats.vertices_collapsed - before;
 }
 
+struct JointScratch {
+  std::vector<uint32_t> vertices, region, tets, star;
+  std::vector<double> old_positions;
+};
+
+// Tets within this quality of the worst one lend their free corners to a
+// joint move (kJointVertices at most).
+constexpr double kJointBand = 0.05;
+constexpr size_t kJointVertices = 32;
+
+// The free corners of tet `worst` and of the tets in their stars within
+// kJointBand of its quality, moved together (smooth_jointly); kept when the
+// smallest dihedral angle of the tets around them does not drop and no more
+// of them are under 10 degrees. True if kept.
+template <typename FreeVertex>
+bool smooth_worst_jointly(TetTopology& topo, uint32_t worst, const FreeVertex& free_vertex, JointScratch& s) {
+  s.vertices.clear();
+  for (int k = 0; k < 4; ++k)
+    if (free_vertex(topo.tet(worst)[k])) s.vertices.push_back(topo.tet(worst)[k]);
+  const double bar = topo.quality(worst) + kJointBand;
+  for (size_t i = 0; i < s.vertices.size(); ++i) {
+    topo.vertex_star(s.vertices[i], s.star);
+    for (uint32_t t : s.star) {
+      if (topo.quality(t) > bar) continue;
+      for (int k = 0; k < 4; ++k) {
+        const uint32_t u = topo.tet(t)[k];
+        if (s.vertices.size() < kJointVertices && free_vertex(u) &&
+            std::find(s.vertices.begin(), s.vertices.end(), u) == s.vertices.end())
+          s.vertices.push_back(u);
+      }
+    }
+  }
+  if (s.vertices.size() < 2) return false;
+  joint_region(topo, s.vertices, s.region);
+  topo.tet_vertices(s.region, s.tets);
+  const AngleSummary old_angles = summarize_angles(topo, s.tets);
+  s.old_positions.clear();
+  for (uint32_t v : s.vertices) s.old_positions.insert(s.old_positions.end(), topo.point(v), topo.point(v) + 3);
+  const double stuck = topo.quality(worst);
+  if (!smooth_jointly(topo, s.vertices, s.region)) return false;
+  topo.tet_vertices(s.region, s.tets);
+  if (summarize_angles(topo, s.tets).no_worse_than(old_angles) && topo.quality(worst) > stuck) return true;
+  for (size_t i = 0; i < s.vertices.size(); ++i) topo.move_vertex(s.vertices[i], &s.old_positions[3 * i]);
+  return false;
+}
+
 // After the passes: the mesh's worst tet, while it is below the target,
 // gets the topology step, then an insertion, then a collapse, then its free
 // vertices smoothed, then (when none moves) the free vertices around them
-// smoothed before them again, which counts only when the worst tet gains;
+// smoothed before them again, which counts only when the worst tet gains,
+// then (when that fails too) the free vertices of the near-worst tets
+// around it moved together (smooth_worst_jointly);
 // each change is kept only when the smallest dihedral angle of the tets it
 // changes does not drop and no more of them have one under 10 degrees
 // (min_angle_no_worse), until none of them changes anything or after `rounds`
@@ -247,6 +297,7 @@ size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_
 void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& options,
                       const std::vector<uint8_t>& frozen, OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star, neighbours;
+  JointScratch joint;
   CavityGrowth growth{frozen};
   const auto free_vertex = [&](uint32_t v) { return !(v < frozen.size() && frozen[v]); };
   // Smooths free vertex v, kept only when its star's angles get no worse.
@@ -316,6 +367,7 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
             if (free_vertex(v)) guarded_smooth(v);
         changed = topo.quality(worst) > stuck;
       }
+      if (!changed && options.smooth_jointly) changed = smooth_worst_jointly(topo, worst, free_vertex, joint);
     }
     if (!changed) break;
   }

@@ -41,6 +41,9 @@ struct OptimizeOptions {
   // In the worst-tet rounds, when nothing else moves the worst tet, smooth
   // the free vertices around its own first.
   bool smooth_around_worst = true;
+  // In the worst-tet rounds, when that fails too, move the free vertices of
+  // the near-worst tets around it together (joint_smoothing.hpp).
+  bool smooth_jointly = true;
   // In the worst-tet rounds, when the insertion's fixed cavities fail,
   // grow one toward room (insertion.hpp, step 6).
   bool grow_cavities = true;
