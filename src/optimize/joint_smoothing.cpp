@@ -55,6 +55,25 @@ void least_norm_point(const std::vector<double>& rows, size_t count, size_t n, s
 
 }  // namespace
 
+void tied_vertices(const TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& frozen, double band,
+                   size_t cap, std::vector<uint32_t>& vertices) {
+  const auto take = [&](uint32_t v) {
+    if (vertices.size() < cap && !(v < frozen.size() && frozen[v]) &&
+        std::find(vertices.begin(), vertices.end(), v) == vertices.end())
+      vertices.push_back(v);
+  };
+  vertices.clear();
+  for (int k = 0; k < 4; ++k) take(topo.tet(worst)[k]);
+  const double bar = topo.quality(worst) + band;
+  std::vector<uint32_t> star;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    topo.vertex_star(vertices[i], star);
+    for (uint32_t t : star)
+      if (topo.quality(t) <= bar)
+        for (int k = 0; k < 4; ++k) take(topo.tet(t)[k]);
+  }
+}
+
 void joint_region(const TetTopology& topo, const std::vector<uint32_t>& vertices, std::vector<uint32_t>& region) {
   region.clear();
   std::vector<uint32_t> star;

@@ -17,6 +17,13 @@
 
 namespace partet {
 
+// The vertices a joint move of tet `worst` takes: its corners that are not
+// `frozen` (one flag per vertex; those beyond are free), then, breadth
+// first, the free corners of the tets within `band` of its quality in
+// the stars of those taken, at most `cap` in all.
+void tied_vertices(const TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& frozen, double band,
+                   size_t cap, std::vector<uint32_t>& vertices);
+
 // The tets of the stars of `vertices`, ascending, each once.
 void joint_region(const TetTopology& topo, const std::vector<uint32_t>& vertices, std::vector<uint32_t>& region);
 

@@ -237,7 +237,7 @@ size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_
 }
 
 struct JointScratch {
-  std::vector<uint32_t> vertices, region, tets, star;
+  std::vector<uint32_t> vertices, region, tets;
   std::vector<double> old_positions;
 };
 
@@ -246,28 +246,12 @@ struct JointScratch {
 constexpr double kJointBand = 0.05;
 constexpr size_t kJointVertices = 32;
 
-// The free corners of tet `worst` and of the tets in their stars within
-// kJointBand of its quality, moved together (smooth_jointly); kept when the
-// smallest dihedral angle of the tets around them does not drop and no more
-// of them are under 10 degrees. True if kept.
-template <typename FreeVertex>
-bool smooth_worst_jointly(TetTopology& topo, uint32_t worst, const FreeVertex& free_vertex, JointScratch& s) {
-  s.vertices.clear();
-  for (int k = 0; k < 4; ++k)
-    if (free_vertex(topo.tet(worst)[k])) s.vertices.push_back(topo.tet(worst)[k]);
-  const double bar = topo.quality(worst) + kJointBand;
-  for (size_t i = 0; i < s.vertices.size(); ++i) {
-    topo.vertex_star(s.vertices[i], s.star);
-    for (uint32_t t : s.star) {
-      if (topo.quality(t) > bar) continue;
-      for (int k = 0; k < 4; ++k) {
-        const uint32_t u = topo.tet(t)[k];
-        if (s.vertices.size() < kJointVertices && free_vertex(u) &&
-            std::find(s.vertices.begin(), s.vertices.end(), u) == s.vertices.end())
-          s.vertices.push_back(u);
-      }
-    }
-  }
+// The tied_vertices of tet `worst` moved together (smooth_jointly); kept
+// when the worst tet gains, the smallest dihedral angle of the tets around
+// them does not drop and no more of them are under 10 degrees. True if
+// kept.
+bool smooth_worst_jointly(TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& frozen, JointScratch& s) {
+  tied_vertices(topo, worst, frozen, kJointBand, kJointVertices, s.vertices);
   if (s.vertices.size() < 2) return false;
   joint_region(topo, s.vertices, s.region);
   topo.tet_vertices(s.region, s.tets);
@@ -367,7 +351,7 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
             if (free_vertex(v)) guarded_smooth(v);
         changed = topo.quality(worst) > stuck;
       }
-      if (!changed && options.smooth_jointly) changed = smooth_worst_jointly(topo, worst, free_vertex, joint);
+      if (!changed && options.smooth_jointly) changed = smooth_worst_jointly(topo, worst, frozen, joint);
     }
     if (!changed) break;
   }

@@ -48,19 +48,8 @@ TEST(JointSmoothing, RaisesTiedWorstTetsThatSingleMovesLeave) {
   uint32_t worst = 0;
   for (uint32_t t = 0; t < topo.slots(); ++t)
     if (topo.alive(t) && topo.quality(t) < topo.quality(worst)) worst = t;
-  // The free corners of the worst tet and of the tets near its quality
-  // around them.
-  std::vector<uint32_t> vertices, star;
-  for (int k = 0; k < 4; ++k)
-    if (!boundary[topo.tet(worst)[k]]) vertices.push_back(topo.tet(worst)[k]);
-  for (size_t i = 0; i < vertices.size() && vertices.size() < 32; ++i) {
-    topo.vertex_star(vertices[i], star);
-    for (uint32_t t : star)
-      for (int k = 0; k < 4 && topo.quality(t) < topo.quality(worst) + 0.05; ++k) {
-        const uint32_t u = topo.tet(t)[k];
-        if (!boundary[u] && std::find(vertices.begin(), vertices.end(), u) == vertices.end()) vertices.push_back(u);
-      }
-  }
+  std::vector<uint32_t> vertices;
+  tied_vertices(topo, worst, boundary, 0.05, 32, vertices);
   ASSERT_GE(vertices.size(), 2u);
   std::vector<uint32_t> region;
   joint_region(topo, vertices, region);
