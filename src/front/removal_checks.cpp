@@ -67,6 +67,14 @@ bool segment_conflicts(const Front& front, uint32_t u, uint32_t v, const uint32_
                                     front.point(t[(k + 2) % 3]));
 }
 
+// Moves `stamp` on for a new round of per-slot marks; when it wraps to 0,
+// every mark is cleared first, so that no old mark equals the new stamp.
+void next_stamp(std::vector<uint32_t>& marks, uint32_t& stamp) {
+  if (++stamp != 0) return;
+  std::fill(marks.begin(), marks.end(), 0);
+  stamp = 1;
+}
+
 }  // namespace
 
 bool meets_beyond_shared_vertex(const double* s, const double* o, const double* t1, const double* t2) {
@@ -88,10 +96,7 @@ void gather_near_front(const Front& front, const std::vector<size_t>& leaves, Ne
   // A face is listed in every leaf its box overlaps: take it once (marks,
   // not sorting: this runs for every face removal attempt).
   if (near.face_mark.size() < front.num_face_slots()) near.face_mark.resize(front.num_face_slots(), 0);
-  if (++near.gather == 0) {
-    std::fill(near.face_mark.begin(), near.face_mark.end(), 0);
-    near.gather = 1;
-  }
+  next_stamp(near.face_mark, near.gather);
   for (size_t leaf : leaves) {
     for (uint32_t e = front.first_face_entry(leaf); e != kNoIndex; e = front.next_entry(e)) {
       const uint32_t f = front.entry_face(e);
@@ -168,10 +173,7 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     near.vertex_check.resize(front.num_vertices(), 0);
     near.vertex_clear.resize(front.num_vertices(), 0);
   }
-  if (++near.check == 0) {
-    std::fill(near.vertex_check.begin(), near.vertex_check.end(), 0);
-    near.check = 1;
-  }
+  next_stamp(near.vertex_check, near.check);
   const uint32_t planes[4][3] = {{a, c, b}, {b, c, p}, {a, p, c}, {a, b, p}};
   auto clear_of = [&](uint32_t x) -> uint8_t {
     if (near.vertex_check[x] == near.check) return near.vertex_clear[x];
