@@ -91,6 +91,50 @@ inline int orient3d(const double* a, const double* b, const double* c, const dou
   return detail::orient3d_exact(a, b, c, d);
 }
 
+// orient3d(a, b, c, d) for many d against one plane (a, b, c): the minors
+// of (b - a, c - a) are computed once. The filter is orient3d's own, bit for
+// bit, on the even permutation (a, d, b, c), whose determinant is the same;
+// uncertain signs take the exact path of orient3d(a, b, c, d). The points
+// must outlive the object.
+class PlaneSide {
+ public:
+  PlaneSide(const double* a, const double* b, const double* c) : a_(a), b_(b), c_(c) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    const double p1 = uy * vz, p2 = uz * vy;
+    const double p3 = uz * vx, p4 = ux * vz;
+    const double p5 = ux * vy, p6 = uy * vx;
+    minor_[0] = p1 - p2;
+    minor_[1] = p3 - p4;
+    minor_[2] = p5 - p6;
+    minor_abs_[0] = std::fabs(p1) + std::fabs(p2);
+    minor_abs_[1] = std::fabs(p3) + std::fabs(p4);
+    minor_abs_[2] = std::fabs(p5) + std::fabs(p6);
+  }
+  // The sign of orient3d(a, b, c, d).
+  int operator()(const double* d) const {
+    const int sign = filtered(d);
+    return sign != 0 ? sign : exact(d);
+  }
+  // The filter alone: the sign when it is certain, else 0 (d may still be
+  // off the plane: exact(d) decides).
+  int filtered(const double* d) const {
+    const double wx = d[0] - a_[0], wy = d[1] - a_[1], wz = d[2] - a_[2];
+    const double det = (wx * minor_[0] + wy * minor_[1]) + wz * minor_[2];
+    const double awx = std::fabs(wx), awy = std::fabs(wy), awz = std::fabs(wz);
+    const double permanent = (awx * minor_abs_[0] + awy * minor_abs_[1]) + awz * minor_abs_[2];
+    const double bound = detail::kOrient3dBound * permanent + (awx + awy + awz + 1) * detail::kUnderflowSlack;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+    return 0;
+  }
+  int exact(const double* d) const { return detail::orient3d_exact(a_, b_, c_, d); }
+
+ private:
+  const double *a_, *b_, *c_;
+  double minor_[3], minor_abs_[3];
+};
+
 // det[b-a; c-a; d-a] evaluated in plain doubles (six times the signed volume
 // of tet abcd), for sizes and quality measures only: its sign may be wrong
 // for nearly flat tets, so decisions use orient3d.

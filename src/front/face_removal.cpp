@@ -235,6 +235,7 @@ bool Remover::try_face(uint32_t f, bool full) {
   const uint32_t* t = front_.face(f);
   const uint32_t a = t[0], b = t[1], c = t[2];
   const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
+  const PlaneSide base_side(pa, pb, pc);
   targets_.clear();
   find_closers(f);
   for (size_t leaf : leaves_)
@@ -243,7 +244,7 @@ bool Remover::try_face(uint32_t f, bool full) {
       const double* q = front_.point(v);
       bool inside = true;
       for (int k = 0; k < 3; ++k) inside = inside && box_lo_[k] <= q[k] && q[k] <= box_hi_[k];
-      if (!inside || orient3d(pa, pb, pc, q) <= 0) continue;
+      if (!inside || base_side(q) <= 0) continue;
       const double shape = shape_measure(pa, pb, pc, q);
       if (shape < options_.min_quality) continue;
       const int closed = static_cast<int>(std::count(closers_.begin(), closers_.end(), v));

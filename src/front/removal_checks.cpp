@@ -168,32 +168,63 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
   // (base, then the sides) or is one of that face's corners. A front face
   // whose three corners share a bit meets the closed tet at most in
   // corners or an edge of that face, which no test below reports: it is
-  // passed over. Cached per vertex for this check.
+  // passed over. Cached per vertex for this check. The low four bits are
+  // those the orientation filter makes certain; the high four mark planes
+  // it left open (x on or within rounding of the plane), which only
+  // clear_of_plane settles exactly, when a verdict depends on them (points on
+  // a face plane are common: core faces, flat parts of the surface).
   if (near.vertex_check.size() < front.num_vertices()) {
     near.vertex_check.resize(front.num_vertices(), 0);
     near.vertex_clear.resize(front.num_vertices(), 0);
   }
   next_stamp(near.vertex_check, near.check);
   const uint32_t planes[4][3] = {{a, c, b}, {b, c, p}, {a, p, c}, {a, b, p}};
+  const PlaneSide plane_side[4] = {{pa, pc, pb}, {pb, pc, pp}, {pa, pp, pc}, {pa, pb, pp}};
   auto clear_of = [&](uint32_t x) -> uint8_t {
     if (near.vertex_check[x] == near.check) return near.vertex_clear[x];
     uint8_t mask = 0;
+    const bool corner = x == a || x == b || x == c || x == p;
     for (int k = 0; k < 4; ++k) {
       const uint32_t* q = planes[k];
-      if (x == q[0] || x == q[1] || x == q[2] ||
-          (x != a && x != b && x != c && x != p &&
-           orient3d(front.point(q[0]), front.point(q[1]), front.point(q[2]), front.point(x)) > 0))
+      if (x == q[0] || x == q[1] || x == q[2]) {
         mask |= static_cast<uint8_t>(1u << k);
+      } else if (!corner) {
+        const int side = plane_side[k].filtered(front.point(x));
+        if (side != 0) mask |= static_cast<uint8_t>((side > 0 ? 1u : 0u) << k);
+        else mask |= static_cast<uint8_t>(0x10u << k);
+      }
     }
     near.vertex_check[x] = near.check;
     near.vertex_clear[x] = mask;
     return mask;
   };
+  // Bit k of clear_of(x), decided exactly when the filter left it open.
+  auto clear_of_plane = [&](uint32_t x, int k) {
+    const uint8_t mask = clear_of(x);
+    if (((mask >> (4 + k)) & 1u) == 0) return ((mask >> k) & 1u) != 0;
+    const bool clear = plane_side[k].exact(front.point(x)) > 0;
+    near.vertex_clear[x] = static_cast<uint8_t>((mask & ~(0x10u << k)) | (clear ? 1u << k : 0u));
+    return clear;
+  };
+  // True when the three corners share a bit.
+  auto passed_over = [&](uint32_t x, uint32_t y, uint32_t z) {
+    const uint8_t mx = clear_of(x), my = clear_of(y), mz = clear_of(z);
+    if ((mx & my & mz & 0x0Fu) != 0) return true;
+    const unsigned open = (mx | mx >> 4) & (my | my >> 4) & (mz | mz >> 4) & 0x0Fu;
+    for (int k = 0; k < 4; ++k)
+      if (((open >> k) & 1u) && clear_of_plane(x, k) && clear_of_plane(y, k) && clear_of_plane(z, k)) return true;
+    return false;
+  };
 
   // (i) Front vertices in the closed tet: clear of no face plane.
   auto inside = [&](uint32_t v) {
     if (v == a || v == b || v == c || v == p) return false;
-    return point_in_box(front.point(v), tet_box) && clear_of(v) == 0;
+    if (!point_in_box(front.point(v), tet_box)) return false;
+    const uint8_t mask = clear_of(v);
+    if ((mask & 0x0Fu) != 0) return false;
+    for (int k = 0; k < 4; ++k)
+      if (((mask >> (4 + k)) & 1u) && clear_of_plane(v, k)) return false;
+    return true;
   };
 
   // (ii) New edges against front faces, (iii) new faces against front
@@ -212,7 +243,7 @@ RemovalVerdict check_removal(const Front& front, uint32_t f, uint32_t p, const N
     const float* face_box = front.face_box(g);
     if (!meets_float_box(tet_box, face_box)) return RemovalVerdict::kValid;
     const uint32_t* t = front.face(g);
-    if ((clear_of(t[0]) & clear_of(t[1]) & clear_of(t[2])) != 0) return RemovalVerdict::kValid;
+    if (passed_over(t[0], t[1], t[2])) return RemovalVerdict::kValid;
     for (int k = 0; k < 3; ++k) {
       if (!new_edge[k] || !meets_float_box(edge_box[k], face_box)) continue;
       index = k;

@@ -297,6 +297,55 @@ TEST(Predicates, Orient3dRandomNearCoplanar) {
   EXPECT_GT(zeros, 0);
 }
 
+TEST(Predicates, PlaneSideMatchesOrient3d) {
+  // One plane against many points: near-coplanar ones (ulps off the plane,
+  // large offsets, small and large scales), points exactly on it, and far
+  // ones; the sign must be orient3d's and the reference's.
+  std::mt19937_64 rng(17);
+  const double offsets[] = {0, 1e15, -7.5e9, 3.0};
+  const double scales[] = {1, 1e-3, 1e6};
+  int zeros = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const Tet t = near_coplanar(rng, offsets[n % 4], scales[(n / 4) % 3]);
+    const PlaneSide side(t.p[0], t.p[1], t.p[2]);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::uniform_int_distribution<int> k(-2, 2);
+    for (int m = 0; m < 5; ++m) {
+      // Four points within ulps of the plane, then one off it.
+      double q[3];
+      const double s = u(rng), r = u(rng);
+      for (int c = 0; c < 3; ++c)
+        q[c] = ulps(t.p[0][c] + s * (t.p[1][c] - t.p[0][c]) + r * (t.p[2][c] - t.p[0][c]), k(rng)) +
+               (m == 4 ? scales[(n / 4) % 3] * u(rng) : 0.0);
+      const int expected = ref_orient3d(t.p[0], t.p[1], t.p[2], q);
+      zeros += expected == 0;
+      ASSERT_EQ(side(q), expected) << n << " " << m;
+      ASSERT_EQ(side(q), orient3d(t.p[0], t.p[1], t.p[2], q)) << n << " " << m;
+    }
+  }
+  EXPECT_GT(zeros, 0);
+  // Lattice points on the plane x + 2y - 3z = 0 shifted by 2^52.
+  const double o = 4503599627370496.0;
+  const double a[3] = {o, o, o}, b[3] = {o + 3, o, o + 1}, c[3] = {o - 2, o + 1, o};
+  const PlaneSide lattice(a, b, c);
+  std::uniform_int_distribution<int> v(-1000, 1000);
+  for (int n = 0; n < 1000; ++n) {
+    const double y = v(rng), z = v(rng);
+    double q[3] = {o + (3 * z - 2 * y), o + y, o + z};
+    EXPECT_EQ(lattice(q), 0);
+    q[0] += 1;
+    EXPECT_EQ(lattice(q), ref_orient3d(a, b, c, q));
+  }
+  // The underflow case of UnderflowInTheFilter, plane (a, c, d) against b
+  // (an even permutation: the same sign).
+  const double tiny = std::ldexp(1.0, -537);
+  const double pa[3] = {0, 0, 0}, pb[3] = {std::ldexp(1.0, 600), 1, 0};
+  const double pc[3] = {0, 1.25 * tiny, 1.25 * tiny}, pd[3] = {0.4 * std::ldexp(1.0, 63), 1.24 * tiny, 1.16 * tiny};
+  EXPECT_EQ(PlaneSide(pa, pb, pc)(pd), 1);
+  EXPECT_EQ(PlaneSide(pa, pc, pd)(pb), 1);
+  EXPECT_EQ(PlaneSide(pb, pc, pa)(pd), 1);
+}
+
 TEST(Predicates, Orient3dExactlyCoplanarWithLargeOffsets) {
   // Integer points on the plane x + 2y - 3z = 0 shifted by 2^52: exactly
   // representable, exactly coplanar; moving one by one unit breaks it.
