@@ -169,7 +169,9 @@ bool Remover::neighbourhood_foreign() const {
 }
 
 void Remover::make_tet(uint32_t f, uint32_t p) {
-  make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_);
+  // Targets lie in the neighbourhood box, and so does the tet's box.
+  const LeafCover cover{leaves_, leaf_cells_};
+  make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_, &cover);
   ++counts_.tets;
   for (uint32_t g : added_) push(g);
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
@@ -435,12 +437,12 @@ void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
 }
 
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
-                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
+                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk, const LeafCover* cover) {
   const uint32_t* t = front.face(f);
   out.tets.insert(out.tets.end(), {t[0], t[1], t[2], p});
   added.clear();
   shrunk.clear();
-  front.apply_tet(f, p, added, shrunk);
+  front.apply_tet(f, p, added, shrunk, cover);
   for (uint32_t leaf : shrunk) {
     LeafClass& cls = tree.cls[leaf];
     if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front.leaf_front_empty(leaf))

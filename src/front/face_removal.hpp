@@ -125,9 +125,9 @@ struct RemovalCounts {
 // Makes tet (base face f, p): appends it to `out`, updates the front
 // (`added`: faces made; `shrunk`: leaves whose front lost faces) and
 // reclassifies boundary or too-close leaves whose front became empty as
-// kDone. Shared by every kind of removal.
+// kDone. Shared by every kind of removal. `cover`: see Front::apply_tet.
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
-                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
+                      std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk, const LeafCover* cover = nullptr);
 
 // `front` must be built over `tree` and `root`. `out` receives the tets,
 // numbered in the front's vertex numbering: its vertices must be a prefix

@@ -152,7 +152,18 @@ void Front::list_face(uint32_t f, bool stamp) {
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
-  query_.leaves_in_range(glo, ghi, leaves_scratch_);
+  if (cover_) {
+    leaves_scratch_.clear();
+    const std::vector<uint32_t>& cells = cover_->cells;
+    for (size_t i = 0; i < cover_->leaves.size(); ++i) {
+      const uint32_t* lc = &cells[6 * i];
+      if (lc[0] <= ghi[0] && glo[0] <= lc[3] && lc[1] <= ghi[1] && glo[1] <= lc[4] && lc[2] <= ghi[2] &&
+          glo[2] <= lc[5])
+        leaves_scratch_.push_back(cover_->leaves[i]);
+    }
+  } else {
+    query_.leaves_in_range(glo, ghi, leaves_scratch_);
+  }
   double root_hi[3];
   for (int k = 0; k < 3; ++k) root_hi[k] = root_.origin[k] + root_.edge();
   const TriangleBoxTest triangle(point(a), point(b), point(c));
@@ -242,9 +253,11 @@ void Front::remove_last_vertex() {
   vertex_next_.pop_back();
 }
 
-int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk) {
+int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk,
+                     const LeafCover* cover) {
   PARTET_ASSERT(f < alive_.size() && alive_[f], "tet on a closed front face");
   ++changes_;
+  cover_ = cover;
   const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
   // Add before closing, so that vertices kept by the new faces never leave
   // their leaf's list.
@@ -255,6 +268,7 @@ int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::
     twins[s] = find_face(sides[s][0], sides[s][1], sides[s][2]);
     if (twins[s] == kNoIndex) added.push_back(add_face(sides[s][0], sides[s][1], sides[s][2]));
   }
+  cover_ = nullptr;
   close_face(f, shrunk);
   for (int s = 0; s < 3; ++s)
     if (twins[s] != kNoIndex) {

@@ -49,6 +49,14 @@ namespace partet {
 
 constexpr uint32_t kNoIndex = UINT32_MAX;
 
+// Leaves known to cover a region: every leaf that contains a grid cell of
+// grid_range(box) for any box inside the region, ascending, with their
+// grid cells (lo then hi, 6 per leaf; LeafRangeQuery::leaf_cells).
+struct LeafCover {
+  const std::vector<size_t>& leaves;
+  const std::vector<uint32_t>& cells;
+};
+
 class Front {
  public:
   // Copies the vertices and faces of `initial`, which must come from
@@ -134,8 +142,11 @@ class Front {
   // duplicates an alive face with the same orientation. Appends the new
   // faces' indices to `added` and the leaves that lost a face or a vertex
   // to `shrunk` (with repetitions). Returns the number of faces closed
-  // besides f.
-  int apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
+  // besides f. With `cover` (leaves covering the tet's bounding box), the
+  // new faces are listed from those leaves instead of a range query: the
+  // same leaves, in the same order.
+  int apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk,
+                const LeafCover* cover = nullptr);
   // Undoes a tet: the positively oriented tet (a, b, c, d), made earlier,
   // is taken out of the meshed region. Each of its faces, oriented into it,
   // closes its reverse when that is alive (the unmeshed region on the other
@@ -159,6 +170,7 @@ class Front {
   RootCube root_;
   LeafRangeQuery query_;
   std::vector<size_t> leaves_scratch_;
+  const LeafCover* cover_ = nullptr;  // during apply_tet: where list_face looks
 
   std::vector<double> xyz_;
   std::vector<uint64_t> global_ids_;

@@ -270,6 +270,37 @@ TEST(FrontRemoval, CompactionChangesNoTet) {
   EXPECT_GT(compacted_inputs, 0u) << "no input had closed faces to drop";
 }
 
+// The removals list new faces from the neighbourhood's leaves (a
+// LeafCover) instead of a range query: replaying their tets on a second
+// front without a cover gives every leaf the same face lists, in the same
+// order.
+TEST(FrontRemoval, LeafCoverListsFacesAsTheRangeQuery) {
+  for (const char* name : {"joint.off", "spool.off", "sphere966.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 1);
+    Front covered(m.initial, m.tree, m.root), plain(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    const size_t core_tets = out.num_tets();
+    LinearOctree tree = m.tree;
+    const RemovalCounts counts = remove_faces_tree_supported(covered, tree, m.root, out, {}, nullptr, nullptr);
+    ASSERT_GT(counts.tets, 100u) << name;
+    std::vector<uint32_t> added, shrunk;
+    for (size_t t = core_tets; t < out.num_tets(); ++t) {
+      const uint32_t* v = &out.tets[4 * t];
+      const uint32_t f = plain.find_face(v[0], v[1], v[2]);
+      ASSERT_NE(f, kNoIndex) << name << " tet " << t;
+      plain.apply_tet(f, v[3], added, shrunk);
+    }
+    ASSERT_EQ(plain.num_face_slots(), covered.num_face_slots()) << name;
+    for (size_t leaf = 0; leaf < m.tree.size(); ++leaf) {
+      uint32_t e = covered.first_face_entry(leaf), g = plain.first_face_entry(leaf);
+      for (; e != kNoIndex && g != kNoIndex; e = covered.next_entry(e), g = plain.next_entry(g))
+        ASSERT_EQ(covered.entry_face(e), plain.entry_face(g)) << name << " leaf " << leaf;
+      ASSERT_EQ(e == kNoIndex, g == kNoIndex) << name << " leaf " << leaf;
+    }
+  }
+}
+
 // Soundness of still_blocked, on real fronts as tets are applied: every
 // failed removal (f, p) whose blocker still_blocked keeps must fail again
 // when checked from scratch. Both outcomes must occur, of each kind.
