@@ -120,7 +120,7 @@ void Front::release_vertex(uint32_t v, std::vector<uint32_t>& shrunk) {
   shrunk.push_back(leaf);
 }
 
-uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
+uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c, const LeafCover* cover) {
   PARTET_ASSERT(faces_.size() / 3 < kNoIndex - 1, "too many front faces");
   const uint32_t f = static_cast<uint32_t>(alive_.size());
   faces_.insert(faces_.end(), {a, b, c});
@@ -134,11 +134,11 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c) {
   use_vertex(a);
   use_vertex(b);
   use_vertex(c);
-  list_face(f, true);
+  list_face(f, true, cover);
   return f;
 }
 
-void Front::list_face(uint32_t f, bool stamp) {
+void Front::list_face(uint32_t f, bool stamp, const LeafCover* cover) {
   const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) {
@@ -152,14 +152,14 @@ void Front::list_face(uint32_t f, bool stamp) {
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
-  if (cover_) {
+  if (cover) {
     leaves_scratch_.clear();
-    const std::vector<uint32_t>& cells = cover_->cells;
-    for (size_t i = 0; i < cover_->leaves.size(); ++i) {
+    const std::vector<uint32_t>& cells = cover->cells;
+    for (size_t i = 0; i < cover->leaves.size(); ++i) {
       const uint32_t* lc = &cells[6 * i];
       if (lc[0] <= ghi[0] && glo[0] <= lc[3] && lc[1] <= ghi[1] && glo[1] <= lc[4] && lc[2] <= ghi[2] &&
           glo[2] <= lc[5])
-        leaves_scratch_.push_back(cover_->leaves[i]);
+        leaves_scratch_.push_back(cover->leaves[i]);
     }
   } else {
     query_.leaves_in_range(glo, ghi, leaves_scratch_);
@@ -257,7 +257,6 @@ int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::
                      const LeafCover* cover) {
   PARTET_ASSERT(f < alive_.size() && alive_[f], "tet on a closed front face");
   ++changes_;
-  cover_ = cover;
   const uint32_t a = faces_[3 * size_t{f}], b = faces_[3 * size_t{f} + 1], c = faces_[3 * size_t{f} + 2];
   // Add before closing, so that vertices kept by the new faces never leave
   // their leaf's list.
@@ -266,9 +265,8 @@ int Front::apply_tet(uint32_t f, uint32_t p, std::vector<uint32_t>& added, std::
   int closed = 0;
   for (int s = 0; s < 3; ++s) {
     twins[s] = find_face(sides[s][0], sides[s][1], sides[s][2]);
-    if (twins[s] == kNoIndex) added.push_back(add_face(sides[s][0], sides[s][1], sides[s][2]));
+    if (twins[s] == kNoIndex) added.push_back(add_face(sides[s][0], sides[s][1], sides[s][2], cover));
   }
-  cover_ = nullptr;
   close_face(f, shrunk);
   for (int s = 0; s < 3; ++s)
     if (twins[s] != kNoIndex) {

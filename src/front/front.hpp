@@ -156,10 +156,11 @@ class Front {
   void remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk);
 
  private:
-  uint32_t add_face(uint32_t a, uint32_t b, uint32_t c);
-  // Lists face f in the leaves it meets (see the leaf index above); with
-  // `stamp`, marks them changed.
-  void list_face(uint32_t f, bool stamp);
+  uint32_t add_face(uint32_t a, uint32_t b, uint32_t c, const LeafCover* cover = nullptr);
+  // Lists face f in the leaves it meets (see the leaf index above), taking
+  // the candidates from `cover` when given (it covers the face's box), else
+  // from a range query; with `stamp`, marks them changed.
+  void list_face(uint32_t f, bool stamp, const LeafCover* cover = nullptr);
   void close_face(uint32_t f, std::vector<uint32_t>& shrunk);
   void use_vertex(uint32_t v);
   void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
@@ -170,7 +171,6 @@ class Front {
   RootCube root_;
   LeafRangeQuery query_;
   std::vector<size_t> leaves_scratch_;
-  const LeafCover* cover_ = nullptr;  // during apply_tet: where list_face looks
 
   std::vector<double> xyz_;
   std::vector<uint64_t> global_ids_;
