@@ -324,12 +324,7 @@ void Remover::gather_around_tet(const double* pa, const double* pb, const double
   // The tet's box lies in the neighbourhood box (targets are taken inside
   // it), so its leaves are those of the neighbourhood that overlap it: the
   // same list, in the same order, as a range query.
-  tet_leaves_.clear();
-  for (size_t i = 0; i < leaves_.size(); ++i) {
-    const uint32_t* c = &leaf_cells_[6 * i];
-    if (c[0] <= ghi[0] && glo[0] <= c[3] && c[1] <= ghi[1] && glo[1] <= c[4] && c[2] <= ghi[2] && glo[2] <= c[5])
-      tet_leaves_.push_back(leaves_[i]);
-  }
+  leaves_in_cover(LeafCover{leaves_, leaf_cells_}, glo, ghi, tet_leaves_);
   gather_near_front(front_, tet_leaves_, near_);
 }
 

@@ -152,18 +152,10 @@ void Front::list_face(uint32_t f, bool stamp, const LeafCover* cover) {
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
-  if (cover) {
-    leaves_scratch_.clear();
-    const std::vector<uint32_t>& cells = cover->cells;
-    for (size_t i = 0; i < cover->leaves.size(); ++i) {
-      const uint32_t* lc = &cells[6 * i];
-      if (lc[0] <= ghi[0] && glo[0] <= lc[3] && lc[1] <= ghi[1] && glo[1] <= lc[4] && lc[2] <= ghi[2] &&
-          glo[2] <= lc[5])
-        leaves_scratch_.push_back(cover->leaves[i]);
-    }
-  } else {
+  if (cover)
+    leaves_in_cover(*cover, glo, ghi, leaves_scratch_);
+  else
     query_.leaves_in_range(glo, ghi, leaves_scratch_);
-  }
   double root_hi[3];
   for (int k = 0; k < 3; ++k) root_hi[k] = root_.origin[k] + root_.edge();
   const TriangleBoxTest triangle(point(a), point(b), point(c));

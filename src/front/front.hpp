@@ -57,6 +57,18 @@ struct LeafCover {
   const std::vector<uint32_t>& cells;
 };
 
+// Replaces `out` with the leaves of `cover` that contain a grid cell of
+// [lo, hi] (inclusive), ascending: LeafRangeQuery::leaves_in_range's answer
+// when the cover covers that range.
+inline void leaves_in_cover(const LeafCover& cover, const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out) {
+  out.clear();
+  for (size_t i = 0; i < cover.leaves.size(); ++i) {
+    const uint32_t* c = &cover.cells[6 * i];
+    if (c[0] <= hi[0] && lo[0] <= c[3] && c[1] <= hi[1] && lo[1] <= c[4] && c[2] <= hi[2] && lo[2] <= c[5])
+      out.push_back(cover.leaves[i]);
+  }
+}
+
 class Front {
  public:
   // Copies the vertices and faces of `initial`, which must come from
