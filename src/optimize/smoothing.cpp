@@ -208,6 +208,11 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
 void least_norm_direction(const std::vector<double>& gradient, const std::vector<size_t>& active, double d[3]) {
   const size_t n = active.size();
   auto g = [&](size_t i) { return &gradient[3 * active[i]]; };
+  // No direction (no move) unless a candidate below is a number: gradients
+  // of near-flat tets can overflow to inf or NaN, and no NaN point is
+  // nearer the origin than another.
+  d[0] = d[1] = d[2] = 0;
+  if (n == 0) return;
   if (n == 1) {
     std::copy_n(g(0), 3, d);
     return;

@@ -49,7 +49,8 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
 // The point of least norm in the convex hull of the vectors gradient[3k ..
 // 3k + 2] for k in `active` (not empty), in d: the steepest common ascent
 // direction of the active tets. Exact (up to rounding) for up to six
-// vectors; Gilbert's iterations, at most 64, for more.
+// vectors; Gilbert's iterations, at most 64, for more. The zero vector
+// when `active` is empty or no candidate point is a number.
 void least_norm_direction(const std::vector<double>& gradient, const std::vector<size_t>& active, double d[3]);
 
 }  // namespace partet

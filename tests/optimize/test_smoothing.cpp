@@ -1,6 +1,7 @@
 // Smoothing of one interior vertex, the quality measure, and the frozen
 // flags of optimize_mesh on a cube coned to a perturbed centre; the least
-// norm point of a few gradients against a brute-force search.
+// norm point of a few gradients against a brute-force search, and of NaN
+// gradients.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -183,6 +184,23 @@ TEST(Smoothing, RelaxationKeepsTheWorstTet) {
 // The least norm point of the hull of 1 to 6 random vectors (some through
 // the origin's side, some not) against the best convex combination on a
 // fine grid of weights: never farther from the origin, and close to it.
+// Gradients of near-flat tets can overflow: with only NaN candidates the
+// direction is zero (no move), never whatever the output held before.
+TEST(Smoothing, LeastNormDirectionOfNaNGradientsIsZero) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (size_t n = 0; n <= 6; ++n) {
+    if (n == 1 || n == 2) continue;  // copied or clamped: NaN in, NaN out
+    std::vector<double> gradient(3 * n, nan);
+    std::vector<size_t> active;
+    for (size_t k = 0; k < n; ++k) active.push_back(k);
+    double d[3] = {5, -7, 11};
+    least_norm_direction(gradient, active, d);
+    EXPECT_EQ(d[0], 0) << n;
+    EXPECT_EQ(d[1], 0) << n;
+    EXPECT_EQ(d[2], 0) << n;
+  }
+}
+
 TEST(Smoothing, LeastNormDirectionMatchesBruteForce) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> coord(-1, 1);
