@@ -1,5 +1,7 @@
 // insert_vertex (see insertion.hpp). A trial is applied for real (replace)
-// so that smoothing sees the new star, and undone by the reverse replace.
+// so that smoothing sees the new star, and undone by the reverse replace,
+// which leaves no trace (the vertices' incident tets, where star walks
+// start, restored).
 #include "optimize/insertion.hpp"
 
 #include <algorithm>
@@ -77,7 +79,7 @@ bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& o
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
                 SmoothingScratch& scratch, InsertionRule rule, bool settled = false,
                 CavityGrowth* growth = nullptr) {
-  std::vector<uint32_t> old_tets, new_tets, created;
+  std::vector<uint32_t> old_tets, new_tets, created, incident;
   const std::vector<uint32_t> members = sorted_copy(cavity);
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
@@ -122,6 +124,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
       return false;
     }
   }
+  topo.incident_tets(old_tets, incident);
   topo.replace(cavity, new_tets, created);
   smooth_vertex(topo, v, scratch);
   double new_quality = std::numeric_limits<double>::infinity();
@@ -147,6 +150,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   }
   std::vector<uint32_t> restored;
   topo.replace(created, old_tets, restored);
+  topo.restore_incident(old_tets, incident, cavity, restored);
   topo.remove_last_vertex();
   return false;
 }

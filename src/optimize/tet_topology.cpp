@@ -264,6 +264,18 @@ void TetTopology::vertex_star(uint32_t v, std::vector<uint32_t>& star) const {
   }
 }
 
+void TetTopology::restore_incident(std::span<const uint32_t> quads, std::span<const uint32_t> incident,
+                                   std::span<const uint32_t> moved_from, std::span<const uint32_t> moved_to) {
+  PARTET_ASSERT(quads.size() == incident.size() && moved_from.size() == moved_to.size(), "incident lists disagree");
+  for (size_t i = 0; i < quads.size(); ++i) {
+    uint32_t t = incident[i];
+    const auto at = std::find(moved_from.begin(), moved_from.end(), t);
+    if (at != moved_from.end()) t = moved_to[static_cast<size_t>(at - moved_from.begin())];
+    PARTET_ASSERT(t != kNone && alive(t) && local_index(tet(t), quads[i]) >= 0, "restored incident tet lacks its vertex");
+    vertex_tet_[quads[i]] = t;
+  }
+}
+
 void TetTopology::compact() {
   size_t kept = 0;
   for (uint32_t t = 0; t < slots(); ++t) {

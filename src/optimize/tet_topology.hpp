@@ -66,6 +66,20 @@ class TetTopology {
   void replace(std::span<const uint32_t> old_tets, std::span<const uint32_t> new_tets,
                std::vector<uint32_t>& created);
 
+  // The incident tet of each vertex of `quads` (4 vertex indices per tet),
+  // in `incident` (one per entry), taken before a trial replace(); after
+  // its reverse, restore_incident() puts them back, an incident tet that
+  // was moved from slot moved_from[i] to moved_to[i] (the trial's cavity
+  // and the reverse's created slots) following it. A trial and its reverse
+  // move the incident tets, where star walks start: restoring them makes
+  // the trial leave no trace when the tets are back in their slots.
+  void incident_tets(std::span<const uint32_t> quads, std::vector<uint32_t>& incident) const {
+    incident.clear();
+    for (uint32_t v : quads) incident.push_back(vertex_tet_[v]);
+  }
+  void restore_incident(std::span<const uint32_t> quads, std::span<const uint32_t> incident,
+                        std::span<const uint32_t> moved_from, std::span<const uint32_t> moved_to);
+
   // The tets around the edge (v[i], v[j]) of tet t, when they close a ring
   // of at most kMaxRing tets: a = v[i], b = v[j], ring vertices r_0..r_{n-1}
   // and tets[k] = (a, b, r_k, r_{k+1 mod n}) as a positive tet. False for a
