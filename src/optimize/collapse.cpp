@@ -37,17 +37,13 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
     if (on_open_face(topo, v, star)) continue;
     double old_quality = std::numeric_limits<double>::infinity(), old_deficit = 0;
     int old_slivers = 0;
-    neighbours.clear();
     for (uint32_t s : star) {
       const double q = topo.quality(s);
       old_quality = std::min(old_quality, q);
       old_deficit += std::max(0.0, bar - q);
       old_slivers += q < ten;
-      for (int k = 0; k < 4; ++k)
-        if (topo.tet(s)[k] != v) neighbours.push_back(topo.tet(s)[k]);
     }
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    topo.star_neighbours(v, star, neighbours);
     for (uint32_t w : neighbours) {
       // Only a collapse beating the star's worst and the best so far counts.
       const double beat = std::max(old_quality, best.quality);

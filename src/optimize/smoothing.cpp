@@ -274,12 +274,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   const size_t n = scratch.star.size();
   // The neighbours, each once.
   std::vector<uint32_t>& around = scratch.neighbours;
-  around.clear();
-  for (uint32_t t : scratch.star)
-    for (int k = 0; k < 4; ++k)
-      if (topo.tet(t)[k] != v) around.push_back(topo.tet(t)[k]);
-  std::sort(around.begin(), around.end());
-  around.erase(std::unique(around.begin(), around.end()), around.end());
+  topo.star_neighbours(v, scratch.star, around);
   double centroid[3] = {0, 0, 0};
   for (uint32_t u : around)
     for (int i = 0; i < 3; ++i) centroid[i] += topo.point(u)[i] / static_cast<double>(around.size());

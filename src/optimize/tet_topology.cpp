@@ -276,6 +276,23 @@ void TetTopology::restore_incident(std::span<const uint32_t> quads, std::span<co
   }
 }
 
+void TetTopology::star_neighbours(uint32_t v, std::span<const uint32_t> star, std::vector<uint32_t>& out) const {
+  out.clear();
+  if (vertex_mark_.size() < num_vertices()) vertex_mark_.resize(num_vertices(), 0);
+  if (++vertex_stamp_ == 0) {
+    std::fill(vertex_mark_.begin(), vertex_mark_.end(), 0);
+    vertex_stamp_ = 1;
+  }
+  for (uint32_t t : star)
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t u = tet(t)[k];
+      if (u == v || vertex_mark_[u] == vertex_stamp_) continue;
+      vertex_mark_[u] = vertex_stamp_;
+      out.push_back(u);
+    }
+  std::sort(out.begin(), out.end());
+}
+
 void TetTopology::compact() {
   size_t kept = 0;
   for (uint32_t t = 0; t < slots(); ++t) {

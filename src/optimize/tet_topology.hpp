@@ -95,6 +95,9 @@ class TetTopology {
   // The tets having vertex v, appended to `star` (cleared first) in a
   // deterministic breadth-first order from v's incident tet.
   void vertex_star(uint32_t v, std::vector<uint32_t>& star) const;
+  // The vertices other than v of the tets in `star` (v's star), each once,
+  // ascending, in `out` (cleared first).
+  void star_neighbours(uint32_t v, std::span<const uint32_t> star, std::vector<uint32_t>& out) const;
   // The vertex quadruples of the tets in `slots`, in order (cleared first).
   void tet_vertices(std::span<const uint32_t> slots, std::vector<uint32_t>& quads) const {
     quads.clear();
@@ -118,6 +121,8 @@ class TetTopology {
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk or replace
   mutable uint32_t stamp_ = 0;
+  mutable std::vector<uint32_t> vertex_mark_;  // per vertex: stamp of the last star_neighbours
+  mutable uint32_t vertex_stamp_ = 0;
   // A stamp no slot has in mark_ yet (clearing mark_ when the count wraps).
   uint32_t next_stamp() const;
   // replace()'s face table (open addressing, reused between calls): a

@@ -1,7 +1,7 @@
 // TetTopology's bookkeeping that the optimizer's trials rely on: a trial
 // replace() and its reverse, with the incident tets restored, leave every
 // slot and every vertex star (and its walk order) as they were; the
-// neighbours of a star come each once, ascending.
+// neighbours of a star come each once, ascending (star_neighbours).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -117,6 +117,27 @@ TEST(TetTopology, ATrialAndItsReverseLeaveNoTrace) {
   trial(topo, star, near_centre, false);
   EXPECT_EQ(snapshot(topo).tets, before.tets);
   EXPECT_NE(snapshot(topo).stars, before.stars);
+}
+
+TEST(TetTopology, StarNeighboursComeOnceAscending) {
+  TetMesh m = lattice();
+  TetTopology topo(m);
+  std::vector<uint32_t> star, got;
+  for (int round = 0; round < 2; ++round)  // the marks of one call do not leak into the next
+    for (uint32_t v = 0; v < topo.num_vertices(); ++v) {
+      topo.vertex_star(v, star);
+      std::vector<uint32_t> want;
+      for (uint32_t t : star)
+        for (int k = 0; k < 4; ++k)
+          if (topo.tet(t)[k] != v) want.push_back(topo.tet(t)[k]);
+      std::sort(want.begin(), want.end());
+      want.erase(std::unique(want.begin(), want.end()), want.end());
+      topo.star_neighbours(v, star, got);
+      EXPECT_EQ(got, want) << v;
+    }
+  topo.vertex_star(13, star);
+  topo.star_neighbours(13, star, got);
+  EXPECT_EQ(got.size(), 14u);  // the centre of a Kuhn lattice has 14 neighbours
 }
 
 }  // namespace
