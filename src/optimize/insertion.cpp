@@ -13,6 +13,7 @@
 #include "check/quality.hpp"
 #include "core/kernel_point.hpp"
 #include "core/predicates.hpp"
+#include "optimize/cone_bound.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
@@ -71,6 +72,13 @@ bool new_angles_no_worse(const TetTopology& topo, const std::vector<uint32_t>& o
   const AngleSummary before = summarize_angles(topo, old_tets), after = summarize_angles(topo, quads);
   const int extra = !trade ? 0 : after.smallest >= 2 * before.smallest ? kDoublingTradeSlivers : kTradeSlivers;
   return after.no_worse_than(before, extra);
+}
+
+// The worst tet_quality of the tets of `cavity`.
+double worst_quality(const TetTopology& topo, const std::vector<uint32_t>& cavity) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (uint32_t c : cavity) worst = std::min(worst, topo.quality(c));
+  return worst;
 }
 
 // Inserts a vertex at p into `cavity` if that pays (see insertion.hpp).
@@ -181,6 +189,7 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
 // behind, the kernel's deepest point sees them all.
 bool try_point_then_kernel(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
                            SmoothingScratch& scratch, InsertionRule rule) {
+  if (!cones_can_beat(topo, cavity, worst_quality(topo, cavity))) return false;
   if (try_cavity(topo, cavity, p, bar, scratch, rule)) return true;
   const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
   return kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true);
@@ -257,12 +266,6 @@ bool blocking_faces(const TetTopology& topo, const std::vector<uint32_t>& member
     }
   join = sorted_copy(join);
   return true;
-}
-
-double worst_quality(const TetTopology& topo, const std::vector<uint32_t>& cavity) {
-  double worst = std::numeric_limits<double>::infinity();
-  for (uint32_t c : cavity) worst = std::min(worst, topo.quality(c));
-  return worst;
 }
 
 // The point `scale` times a regular tet's height (0.816 times the edge of
@@ -391,7 +394,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       for (uint32_t s : star)
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }
-    if (open) {
+    if (open && cones_can_beat(topo, wider, worst_quality(topo, wider))) {
       const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
       if (deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, rule, true)) return true;
     }

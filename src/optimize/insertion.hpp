@@ -51,7 +51,11 @@
 //  7. only for a tet with no neighbour: the tet alone, the vertex at its
 //     centroid (as a fallback after 1-4 it succeeded on no corpus input
 //     but lever, and its trials cost 5 % of the optimizer's time).
-// A kernel point is tried only when its cone already beats the cavity. The
+// A cavity of steps 1, 2 and 4 is not tried at all when no point could
+// beat its worst tet (cone_bound.hpp: at an edge between two outer faces
+// the cones split the cavity's angle); the bound skipped 45 % of handle
+// r1's cavities, never one that would have succeeded on the quick sets
+// (same meshes). A kernel point is tried only when its cone already beats the cavity. The
 // new vertex is then smoothed (smoothing.hpp), and the insertion is kept only
 // if the worst new tet beats the worst tet of the cavity and either the
 // total shortfall (sum of bar - quality over the tets below bar =

@@ -1,0 +1,157 @@
+// cone_quality_bound and cones_can_beat (see cone_bound.hpp): per cavity
+// tet its four outward face normals, per edge the outer faces counted,
+// and at the edges with two the tets' dihedral angles there summed.
+#include "optimize/cone_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "optimize/tet_quality.hpp"
+
+namespace partet {
+namespace {
+
+constexpr int kEdgePairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+// One (cavity tet, edge) incidence: the edge's sorted vertex pair, the
+// tet's index in the cavity, the local edge, and how many of the tet's two
+// faces at the edge are outer faces of the cavity.
+struct Incidence {
+  uint64_t key;
+  uint32_t tet;
+  uint8_t edge;
+  uint8_t outer;
+};
+
+// The outward normals (not normalised) of the four faces of tet v, face k
+// opposite corner k, at n[3k .. 3k + 2].
+void outward_normals(const TetTopology& topo, const uint32_t* v, double* n) {
+  const double* p[4] = {topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3])};
+  for (int k = 0; k < 4; ++k) {
+    const double* a = p[(k + 1) % 4];
+    const double* b = p[(k + 2) % 4];
+    const double* c = p[(k + 3) % 4];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double* m = &n[3 * k];
+    m[0] = u[1] * w[2] - u[2] * w[1];
+    m[1] = u[2] * w[0] - u[0] * w[2];
+    m[2] = u[0] * w[1] - u[1] * w[0];
+    if (m[0] * (p[k][0] - a[0]) + m[1] * (p[k][1] - a[1]) + m[2] * (p[k][2] - a[2]) > 0)
+      for (int i = 0; i < 3; ++i) m[i] = -m[i];
+  }
+}
+
+// The cavity's tets' outward normals (12 doubles per tet) and its
+// (tet, edge) incidences sorted by edge.
+struct CavityEdges {
+  std::vector<double> normals;
+  std::vector<Incidence> incidences;
+};
+
+void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, CavityEdges& out) {
+  std::vector<uint32_t> members(cavity.begin(), cavity.end());
+  std::sort(members.begin(), members.end());
+  out.normals.resize(12 * cavity.size());
+  out.incidences.clear();
+  for (uint32_t i = 0; i < cavity.size(); ++i) {
+    const uint32_t t = cavity[i];
+    const uint32_t* v = topo.tet(t);
+    outward_normals(topo, v, &out.normals[12 * size_t{i}]);
+    bool outer[4];
+    for (int f = 0; f < 4; ++f) {
+      const uint32_t other = topo.twin(4 * t + f);
+      outer[f] = other == TetTopology::kNone || !std::binary_search(members.begin(), members.end(), other / 4);
+    }
+    for (uint8_t e = 0; e < 6; ++e) {
+      const int i0 = kEdgePairs[e][0], i1 = kEdgePairs[e][1];
+      const int k = (i0 != 0 && i1 != 0) ? 0 : (i0 != 1 && i1 != 1) ? 1 : 2;
+      const int l = 6 - i0 - i1 - k;
+      const uint32_t a = std::min(v[i0], v[i1]), b = std::max(v[i0], v[i1]);
+      out.incidences.push_back({(uint64_t{a} << 32) | b, i, e, static_cast<uint8_t>(outer[k] + outer[l])});
+    }
+  }
+  std::sort(out.incidences.begin(), out.incidences.end(),
+            [](const Incidence& x, const Incidence& y) { return x.key != y.key ? x.key < y.key : x.tet < y.tet; });
+}
+
+// The interior dihedral angle of the incidence's tet at its edge as the
+// unit complex number (cos, sin): between the faces opposite the edge's
+// other two corners, pi minus the angle of their outward normals.
+void unit_angle(const CavityEdges& edges, const Incidence& in, double& c, double& s) {
+  const int i0 = kEdgePairs[in.edge][0], i1 = kEdgePairs[in.edge][1];
+  const int k = (i0 != 0 && i1 != 0) ? 0 : (i0 != 1 && i1 != 1) ? 1 : 2;
+  const int l = 6 - i0 - i1 - k;
+  const double* nk = &edges.normals[12 * size_t{in.tet} + 3 * k];
+  const double* nl = &edges.normals[12 * size_t{in.tet} + 3 * l];
+  const double x[3] = {nk[1] * nl[2] - nk[2] * nl[1], nk[2] * nl[0] - nk[0] * nl[2], nk[0] * nl[1] - nk[1] * nl[0]};
+  c = -(nk[0] * nl[0] + nk[1] * nl[1] + nk[2] * nl[2]);
+  s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const double r = std::hypot(c, s);
+  if (r > 0) {
+    c /= r;
+    s /= r;
+  }
+}
+
+// Calls edge(c, s) with the cavity's interior angle, as an unnormalised
+// complex number, at each edge where exactly two outer faces meet; stops
+// when it returns false.
+template <class Edge>
+void for_each_two_face_edge(const CavityEdges& edges, Edge&& edge) {
+  const std::vector<Incidence>& in = edges.incidences;
+  for (size_t i = 0; i < in.size();) {
+    size_t j = i;
+    int outer = 0;
+    for (; j < in.size() && in[j].key == in[i].key; ++j) outer += in[j].outer;
+    if (outer == 2) {
+      double c = 1, s = 0;
+      for (size_t k = i; k < j; ++k) {
+        double ck, sk;
+        unit_angle(edges, in[k], ck, sk);
+        const double nc = c * ck - s * sk, ns = c * sk + s * ck;
+        c = nc;
+        s = ns;
+      }
+      if (!edge(c, s)) return;
+    }
+    i = j;
+  }
+}
+
+}  // namespace
+
+double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cavity) {
+  CavityEdges edges;
+  cavity_edges(topo, cavity, edges);
+  double bound = std::numeric_limits<double>::infinity();
+  for_each_two_face_edge(edges, [&](double c, double s) {
+    double phi = std::atan2(s, c);
+    if (phi < 0) phi += 2 * std::numbers::pi;
+    bound = std::min(bound, kRegularSineScale * std::sin(phi / 2));
+    return true;
+  });
+  return bound;
+}
+
+bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, double worst) {
+  // worst = K sin(alpha); the bound is below it where phi lies within
+  // 2 alpha of 0 (or of 2 pi): c > 0 and |s| < sin(2 alpha) |(c, s)|,
+  // for 2 alpha up to 90 degrees.
+  if (!(worst >= 1e-4) || !(worst <= quality_of_angle(45))) return true;
+  const double sine = worst * (1 - 1e-6) / kRegularSineScale;
+  const double reach = 2 * sine * std::sqrt(1 - sine * sine);  // sin(2 alpha)
+  thread_local CavityEdges edges;  // scratch: no allocation per cavity
+  cavity_edges(topo, cavity, edges);
+  bool can = true;
+  for_each_two_face_edge(edges, [&](double c, double s) {
+    can = !(c > 0 && std::abs(s) < reach * std::hypot(c, s));
+    return can;
+  });
+  return can;
+}
+
+}  // namespace partet

@@ -1,0 +1,111 @@
+// cone_quality_bound and cones_can_beat: the bound is reached by the
+// centroid of a regular tet, no cone set beats it (every interior vertex's
+// star is the cone set of its own position, and random points in the star
+// do no better), and cones_can_beat agrees with it on either side.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/predicates.hpp"
+#include "optimize/cone_bound.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize/tet_topology.hpp"
+#include "optimize_test_util.hpp"
+
+namespace partet {
+namespace {
+
+using test::add_positive_tet;
+
+TEST(ConeBound, ARegularTetsCentroidConesReachIt) {
+  TetMesh m;
+  m.xyz = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
+  add_positive_tet(m, 0, 1, 2, 3);
+  TetTopology topo(m);
+  const uint32_t cavity[1] = {0};
+  // Its dihedral angles (70.5 degrees) split in half at the centroid; the
+  // four cones' worst quality is then sin(35.3 degrees) scaled.
+  double worst = 1;
+  const double centroid[3] = {0, 0, 0};
+  constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  for (const auto& f : kFaces) {
+    const double* p[3] = {m.point(f[0]), m.point(f[1]), m.point(f[2])};
+    const double* a = orient3d(p[0], p[1], p[2], centroid) > 0 ? p[1] : p[2];
+    const double* b = a == p[1] ? p[2] : p[1];
+    worst = std::min(worst, tet_quality(p[0], a, b, centroid));
+  }
+  EXPECT_NEAR(cone_quality_bound(topo, cavity), worst, 1e-12);
+  EXPECT_NEAR(worst, kRegularSineScale * std::sin(std::acos(1.0 / 3) / 2), 1e-12);
+  EXPECT_TRUE(cones_can_beat(topo, cavity, worst * 0.999));
+  EXPECT_FALSE(cones_can_beat(topo, cavity, worst * 1.001));
+}
+
+// A jittered 3 x 3 x 3 Kuhn lattice: 8 interior vertices.
+TetMesh jittered_lattice(std::mt19937& rng) {
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  TetMesh m;
+  for (int z = 0; z < 4; ++z)
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) {
+        const bool inner = x > 0 && x < 3 && y > 0 && y < 3 && z > 0 && z < 3;
+        for (int c : {x, y, z}) m.xyz.push_back(c + (inner ? jitter(rng) : 0.0));
+      }
+  auto id = [](int x, int y, int z) { return static_cast<uint32_t>(x + 4 * y + 16 * z); };
+  constexpr int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x)
+        for (const auto& path : kPaths) {
+          int c[3] = {x, y, z};
+          uint32_t v[4];
+          v[0] = id(c[0], c[1], c[2]);
+          for (int k = 0; k < 3; ++k) {
+            ++c[path[k]];
+            v[k + 1] = id(c[0], c[1], c[2]);
+          }
+          add_positive_tet(m, v[0], v[1], v[2], v[3]);
+        }
+  return m;
+}
+
+TEST(ConeBound, NoPointInAStarBeatsIt) {
+  std::mt19937 rng(11);
+  int below = 0;  // stars whose bound cones_can_beat can refuse
+  for (int mesh = 0; mesh < 20; ++mesh) {
+    TetMesh m = jittered_lattice(rng);
+    TetTopology topo(m);
+    for (uint32_t v : {21u, 22u, 25u, 26u, 37u, 38u, 41u, 42u}) {
+      std::vector<uint32_t> star;
+      topo.vertex_star(v, star);
+      ASSERT_EQ(star.size(), 24u);
+      const double bound = cone_quality_bound(topo, star);
+      // The star is the cone set of v's own position.
+      double own = 1;
+      for (uint32_t t : star) own = std::min(own, topo.quality(t));
+      EXPECT_LE(own, bound + 1e-12);
+      // And of any other point: the same tets with v moved there.
+      std::uniform_real_distribution<double> step(-0.3, 0.3);
+      const double home[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
+      for (int trial = 0; trial < 50; ++trial) {
+        const double x[3] = {home[0] + step(rng), home[1] + step(rng), home[2] + step(rng)};
+        topo.move_vertex(v, x);
+        double worst = 1;
+        for (uint32_t t : star) worst = std::min(worst, topo.quality(t));
+        EXPECT_LE(worst, bound + 1e-12);
+      }
+      topo.move_vertex(v, home);
+      EXPECT_TRUE(cones_can_beat(topo, star, std::min(bound, quality_of_angle(45)) * 0.999));
+      if (bound < quality_of_angle(44)) {
+        EXPECT_FALSE(cones_can_beat(topo, star, bound * 1.001));
+        ++below;
+      }
+    }
+  }
+  EXPECT_GT(below, 0);
+}
+
+}  // namespace
+}  // namespace partet
