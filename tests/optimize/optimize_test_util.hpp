@@ -44,6 +44,33 @@ inline std::vector<std::array<uint32_t, 3>> boundary_faces(const TetMesh& m) {
   return out;
 }
 
+// The cube [0, cells]^3 as cells^3 unit cubes, each split into the 6 Kuhn
+// tets around its (0,0,0)-(1,1,1) diagonal (they match across cubes), all
+// positive; vertex (x, y, z) has index x + (cells + 1) (y + (cells + 1) z).
+inline TetMesh kuhn_lattice(int cells) {
+  TetMesh m;
+  const int n = cells + 1;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) m.xyz.insert(m.xyz.end(), {double(x), double(y), double(z)});
+  auto id = [n](const int* c) { return static_cast<uint32_t>(c[0] + n * (c[1] + n * c[2])); };
+  constexpr int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int z = 0; z < cells; ++z)
+    for (int y = 0; y < cells; ++y)
+      for (int x = 0; x < cells; ++x)
+        for (const auto& path : kPaths) {
+          int c[3] = {x, y, z};
+          uint32_t v[4];
+          v[0] = id(c);
+          for (int k = 0; k < 3; ++k) {
+            ++c[path[k]];
+            v[k + 1] = id(c);
+          }
+          add_positive_tet(m, v[0], v[1], v[2], v[3]);
+        }
+  return m;
+}
+
 inline double worst_quality(const TetMesh& m) {
   double worst = std::numeric_limits<double>::infinity();
   for (size_t t = 0; t < m.num_tets(); ++t) {

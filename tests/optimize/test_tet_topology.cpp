@@ -13,34 +13,12 @@
 namespace partet {
 namespace {
 
-using test::add_positive_tet;
-
-// The cube [0, 2]^3 as 2 x 2 x 2 unit cubes, each split into the 6 Kuhn
-// tets around its (0,0,0)-(1,1,1) diagonal (they match across cubes);
-// vertex 13, the centre (1, 1, 1), is interior, moved off the lattice a
-// little so that no quality ties.
+// A 2 x 2 x 2 Kuhn lattice whose one interior vertex, 13 at (1, 1, 1), is
+// moved off the lattice a little so that no quality ties.
 TetMesh lattice() {
-  TetMesh m;
-  for (int z = 0; z < 3; ++z)
-    for (int y = 0; y < 3; ++y)
-      for (int x = 0; x < 3; ++x) m.xyz.insert(m.xyz.end(), {double(x), double(y), double(z)});
+  TetMesh m = test::kuhn_lattice(2);
   m.xyz[3 * 13] += 0.05;
   m.xyz[3 * 13 + 1] -= 0.03;
-  auto id = [](int x, int y, int z) { return static_cast<uint32_t>(x + 3 * y + 9 * z); };
-  constexpr int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (int z = 0; z < 2; ++z)
-    for (int y = 0; y < 2; ++y)
-      for (int x = 0; x < 2; ++x)
-        for (const auto& path : kPaths) {
-          int c[3] = {x, y, z};
-          uint32_t v[4];
-          v[0] = id(c[0], c[1], c[2]);
-          for (int k = 0; k < 3; ++k) {
-            ++c[path[k]];
-            v[k + 1] = id(c[0], c[1], c[2]);
-          }
-          add_positive_tet(m, v[0], v[1], v[2], v[3]);
-        }
   return m;
 }
 
