@@ -15,6 +15,9 @@ namespace partet {
 namespace {
 
 constexpr int kEdgePairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+// The other two corners of each edge: the faces at the edge are those
+// opposite them.
+constexpr int kEdgeFaces[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
 
 // One (cavity tet, edge) incidence: the edge's sorted vertex pair, the
 // tet's index in the cavity, the local edge, and how many of the tet's two
@@ -67,11 +70,10 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
       outer[f] = other == TetTopology::kNone || !std::binary_search(members.begin(), members.end(), other / 4);
     }
     for (uint8_t e = 0; e < 6; ++e) {
-      const int i0 = kEdgePairs[e][0], i1 = kEdgePairs[e][1];
-      const int k = (i0 != 0 && i1 != 0) ? 0 : (i0 != 1 && i1 != 1) ? 1 : 2;
-      const int l = 6 - i0 - i1 - k;
-      const uint32_t a = std::min(v[i0], v[i1]), b = std::max(v[i0], v[i1]);
-      out.incidences.push_back({(uint64_t{a} << 32) | b, i, e, static_cast<uint8_t>(outer[k] + outer[l])});
+      const uint32_t x = v[kEdgePairs[e][0]], y = v[kEdgePairs[e][1]];
+      const uint64_t key = (uint64_t{std::min(x, y)} << 32) | std::max(x, y);
+      const int outer_faces = int{outer[kEdgeFaces[e][0]]} + int{outer[kEdgeFaces[e][1]]};
+      out.incidences.push_back({key, i, e, static_cast<uint8_t>(outer_faces)});
     }
   }
   std::sort(out.incidences.begin(), out.incidences.end(),
@@ -82,11 +84,8 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
 // unit complex number (cos, sin): between the faces opposite the edge's
 // other two corners, pi minus the angle of their outward normals.
 void unit_angle(const CavityEdges& edges, const Incidence& in, double& c, double& s) {
-  const int i0 = kEdgePairs[in.edge][0], i1 = kEdgePairs[in.edge][1];
-  const int k = (i0 != 0 && i1 != 0) ? 0 : (i0 != 1 && i1 != 1) ? 1 : 2;
-  const int l = 6 - i0 - i1 - k;
-  const double* nk = &edges.normals[12 * size_t{in.tet} + 3 * k];
-  const double* nl = &edges.normals[12 * size_t{in.tet} + 3 * l];
+  const double* nk = &edges.normals[12 * size_t{in.tet} + 3 * kEdgeFaces[in.edge][0]];
+  const double* nl = &edges.normals[12 * size_t{in.tet} + 3 * kEdgeFaces[in.edge][1]];
   const double x[3] = {nk[1] * nl[2] - nk[2] * nl[1], nk[2] * nl[0] - nk[0] * nl[2], nk[0] * nl[1] - nk[1] * nl[0]};
   c = -(nk[0] * nl[0] + nk[1] * nl[1] + nk[2] * nl[2]);
   s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
