@@ -1,10 +1,12 @@
 // face_flip and edge_removal (see flips.hpp). The edge removal table is
 // best[i][k] = max over i < j < k of min(Q(i, j, k), best[i][j], best[j][k])
 // with best[i][i+1] = +inf, Q the worse of the two tets of triangle (i, j, k),
-// or -inf when either is not positive; O(n^3) for n <= 7.
+// or -inf when either is not positive; O(n^3) for n <= 7, run only when the
+// ring's half-angle bound (flips.hpp) does not rule out beating the bar.
 #include "optimize/flips.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "check/tet_faces.hpp"
@@ -26,6 +28,31 @@ double quality_above(const TetTopology& topo, uint32_t v0, uint32_t v1, uint32_t
   if (!(q > floor) || orient3d(p0, p1, p2, p3) <= 0) return kInvalid;
   return q;
 }
+
+// kRegularSineScale * sin(theta / 2) for the dihedral angle theta of the
+// positive tet (p0, p1, p2, p3) at its edge (p2, p3): |u0 + u1| / 2 for the
+// unit inward normals u0, u1 of the faces opposite p0 and p1, which keeps
+// its absolute precision at every angle. NaN for a degenerate face.
+double half_angle_bound(const double* p0, const double* p1, const double* p2, const double* p3) {
+  const double a[3] = {p2[0] - p1[0], p2[1] - p1[1], p2[2] - p1[2]};
+  const double b[3] = {p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
+  const double c[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+  const double d[3] = {p3[0] - p0[0], p3[1] - p0[1], p3[2] - p0[2]};
+  const double n0[3] = {b[1] * a[2] - b[2] * a[1], b[2] * a[0] - b[0] * a[2], b[0] * a[1] - b[1] * a[0]};
+  const double n1[3] = {c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2], c[0] * d[1] - c[1] * d[0]};
+  const double l0 = std::sqrt(n0[0] * n0[0] + n0[1] * n0[1] + n0[2] * n0[2]);
+  const double l1 = std::sqrt(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double s = n0[k] / l0 + n1[k] / l1;
+    sum += s * s;
+  }
+  return kRegularSineScale * std::sqrt(sum) / 2;
+}
+
+// Bounds below this much under a bar prune (rounding of the bound and of
+// tet_quality is far smaller).
+constexpr double kBoundMargin = 1e-9;
 
 void add_tet(Flip& flip, uint32_t v0, uint32_t v1, uint32_t v2, uint32_t v3) {
   uint32_t* out = &flip.new_tets[4 * flip.new_count++];
@@ -196,6 +223,14 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip,
   // A sub-polygon whose best is not above `bar` cannot be part of a wanted
   // triangulation: starting every entry at the bar prunes it.
   const double bar = beat ? std::max(*beat, old_quality) : kInvalid;
+  // Each ring tet (a, b, r_k, r_{k+1}) gives way to two new tets on its
+  // faces at edge (r_k, r_{k+1}), (r_k, r_{k+1}, x, a) and (.., b), which
+  // split its dihedral angle theta there: one of them is at most theta / 2,
+  // so no retriangulation beats kRegularSineScale * sin(theta / 2).
+  for (int k = 0; k < n && beat; ++k)
+    if (half_angle_bound(topo.point(ring.a), topo.point(ring.b), topo.point(r[k]), topo.point(r[(k + 1) % n])) <
+        bar - kBoundMargin)
+      return false;
   constexpr int N = TetTopology::kMaxRing;
   double best[N][N];
   int split[N][N] = {};

@@ -239,6 +239,40 @@ TEST_P(MultiFaceRemoval, RestoresTheTetsAroundAnEdge) {
 
 INSTANTIATE_TEST_SUITE_P(Flips, MultiFaceRemoval, testing::Values(4, 5, 6, 7));
 
+// With a bar to beat, edge removal prunes: sub-polygons not above it, and
+// whole rings by the half-angle bound of their tets. On a jittered lattice,
+// for bars just below, well below and just above the best retriangulation
+// (found without a bar, so unpruned), it finds a flip exactly when the best
+// one beats the bar and the ring's worst tet, and then one as good.
+TEST(Flips, EdgeRemovalWithABarFindsTheBestRetriangulationAboveIt) {
+  TetMesh m = test::kuhn_lattice(3);
+  for (size_t i = 0; i < m.xyz.size(); ++i) {
+    const double x = m.xyz[i];
+    if (x > 0 && x < 3) m.xyz[i] += 0.3 * std::sin(12.9898 * static_cast<double>(i) + 4.1414);
+  }
+  ASSERT_TRUE(all_positive(m));
+  TetTopology topo(m);
+  constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  int improving = 0, just_below = 0;
+  for (uint32_t t = 0; t < topo.slots(); ++t) {
+    for (const auto& e : kEdges) {
+      Flip full;
+      if (!edge_removal(topo, t, e[0], e[1], full)) continue;
+      improving += full.new_quality > full.old_quality;
+      for (const double bar : {full.new_quality - 1e-6, full.new_quality - 0.05, full.new_quality + 1e-6, 0.0}) {
+        Flip pruned;
+        const bool expected = full.new_quality > std::max(bar, full.old_quality);
+        ASSERT_EQ(edge_removal(topo, t, e[0], e[1], pruned, &bar), expected) << "tet " << t << " bar " << bar;
+        if (!expected) continue;
+        EXPECT_EQ(pruned.new_quality, full.new_quality);
+        just_below += bar == full.new_quality - 1e-6;
+      }
+    }
+  }
+  EXPECT_GT(improving, 20);
+  EXPECT_GT(just_below, 20);
+}
+
 TEST(Flips, NoMultiFaceRemovalOnABoundaryFace) {
   TetMesh m = bipyramid(0.5);
   add_positive_tet(m, 0, 1, 2, 3);
