@@ -223,14 +223,14 @@ bool edge_removal(const TetTopology& topo, uint32_t t, int i, int j, Flip& flip,
   // A sub-polygon whose best is not above `bar` cannot be part of a wanted
   // triangulation: starting every entry at the bar prunes it.
   const double bar = beat ? std::max(*beat, old_quality) : kInvalid;
-  // Each ring tet (a, b, r_k, r_{k+1}) gives way to two new tets on its
-  // faces at edge (r_k, r_{k+1}), (r_k, r_{k+1}, x, a) and (.., b), which
-  // split its dihedral angle theta there: one of them is at most theta / 2,
-  // so no retriangulation beats kRegularSineScale * sin(theta / 2).
-  for (int k = 0; k < n && beat; ++k)
-    if (half_angle_bound(topo.point(ring.a), topo.point(ring.b), topo.point(r[k]), topo.point(r[(k + 1) % n])) <
-        bar - kBoundMargin)
-      return false;
+  // The ring's half-angle bound (flips.hpp): ring tet (a, b, r_k, r_{k+1})
+  // gives way to (r_k, r_{k+1}, x, a) and (.., b), which split its angle
+  // at edge (r_k, r_{k+1}).
+  if (beat)
+    for (int k = 0; k < n; ++k)
+      if (half_angle_bound(topo.point(ring.a), topo.point(ring.b), topo.point(r[k]), topo.point(r[(k + 1) % n])) <
+          bar - kBoundMargin)
+        return false;
   constexpr int N = TetTopology::kMaxRing;
   double best[N][N];
   int split[N][N] = {};
