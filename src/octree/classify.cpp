@@ -10,6 +10,7 @@
 #include "octree/inside_index.hpp"
 #include "octree/neighbours.hpp"
 #include "octree/range_query.hpp"
+#include "octree/triangle_batches.hpp"
 
 namespace partet {
 
@@ -84,13 +85,8 @@ struct NearRegion {
   uint32_t lo[3], hi[3];
 };
 
-// Triangles whose regions are searched with one range query: consecutive
-// ones in tree order while their union stays within twice the first's
-// extent. Only the query is shared; each triangle still tests the leaves of
-// its own region, so the result is the same as one query per triangle.
-constexpr size_t kBatch = 32;
-
-// Marks interior leaves too close to a triangle (see classify.hpp).
+// Marks interior leaves too close to a triangle (see classify.hpp), the
+// triangles searched in batches (triangle_batches.hpp).
 void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& root,
                     const std::vector<double>& vertex_size, const LeafTriangles& bins, double factor) {
   const auto region_of = [&](uint32_t t) {
@@ -108,32 +104,9 @@ void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& ro
     grid_range(root, lo, hi, r.lo, r.hi);
     return r;
   };
-  const std::vector<uint32_t> order = triangles_in_tree_order(s, root);
   const LeafRangeQuery query(tree);
-  std::vector<NearRegion> batch;
-  std::vector<size_t> leaves;
-  size_t next = 0;
-  while (next < order.size()) {
-    batch.assign(1, region_of(order[next++]));
-    uint32_t lo[3], hi[3], limit = 0;
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = batch[0].lo[i];
-      hi[i] = batch[0].hi[i];
-      limit = std::max(limit, 2 * (hi[i] - lo[i] + 1));
-    }
-    while (next < order.size() && batch.size() < kBatch) {
-      const NearRegion r = region_of(order[next]);
-      bool fits = true;
-      for (int i = 0; i < 3; ++i) fits = fits && std::max(hi[i], r.hi[i]) - std::min(lo[i], r.lo[i]) < limit;
-      if (!fits) break;
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = std::min(lo[i], r.lo[i]);
-        hi[i] = std::max(hi[i], r.hi[i]);
-      }
-      batch.push_back(r);
-      ++next;
-    }
-    query.leaves_in_range(lo, hi, leaves);
+  for_each_triangle_batch(triangles_in_tree_order(s, root), query, region_of,
+                          [&](const std::vector<NearRegion>& batch, const std::vector<size_t>& leaves) {
     for (size_t leaf : leaves) {
       if (tree.cls[leaf] != LeafClass::kInterior) continue;
       uint32_t a[3];
@@ -143,9 +116,7 @@ void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& ro
       double blo[3], bhi[3];
       query.leaf_box(root, leaf, blo, bhi);
       for (const NearRegion& r : batch) {
-        bool in_region = true;
-        for (int i = 0; i < 3; ++i) in_region = in_region && a[i] <= r.hi[i] && a[i] + (edge - 1) >= r.lo[i];
-        if (!in_region) continue;
+        if (!leaf_meets_region(a, edge, r.lo, r.hi)) continue;
         const uint32_t* v = &s.tris[3 * size_t{r.t}];
         const double gap = factor * std::max(r.size, std::min(0.5 * h, r.cap));
         if (box_triangle_closer_than(blo, bhi, s.point(v[0]), s.point(v[1]), s.point(v[2]), gap)) {
@@ -154,7 +125,7 @@ void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& ro
         }
       }
     }
-  }
+  });
 }
 
 }  // namespace
