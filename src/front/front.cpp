@@ -54,6 +54,7 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
       global_ids_(initial.global_ids),
       vertex_leaf_(initial.vertex_leaf),
       vertex_uses_(initial.vertex_leaf.size(), 0),
+      free_(initial.vertex_leaf.size(), 0),
       vertex_prev_(initial.vertex_leaf.size(), kNoIndex),
       vertex_next_(initial.vertex_leaf.size(), kNoIndex),
       leaf_vertex_head_(tree.size(), kNoIndex),
@@ -73,6 +74,14 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
     PARTET_ASSERT(find_face(t[0], t[1], t[2]) == kNoIndex, "initial front has two faces on one vertex triple");
     add_face(t[0], t[1], t[2]);
   }
+  // Free vertices: listed with one use that the first face using them takes.
+  PARTET_ASSERT(initial.free_vertices <= vertex_leaf_.size(), "more free vertices than vertices");
+  for (size_t v = vertex_leaf_.size() - initial.free_vertices; v < vertex_leaf_.size(); ++v) {
+    PARTET_ASSERT(vertex_uses_[v] == 0, "a free vertex is used by a face of the initial front");
+    use_vertex(static_cast<uint32_t>(v));
+    free_[v] = 1;
+  }
+  free_count_ = initial.free_vertices;
 }
 
 uint32_t Front::find_face(uint32_t a, uint32_t b, uint32_t c) const {
@@ -97,6 +106,11 @@ void Front::change_edge(uint32_t a, uint32_t b, int delta) {
 }
 
 void Front::use_vertex(uint32_t v) {
+  if (free_[v]) {  // its first face takes over the free vertex's use
+    free_[v] = 0;
+    --free_count_;
+    return;
+  }
   if (vertex_uses_[v]++ > 0) return;
   const uint32_t leaf = vertex_leaf_[v];
   vertex_prev_[v] = kNoIndex;
@@ -230,9 +244,21 @@ uint32_t Front::add_vertex(const double* p, uint64_t global_id) {
   global_ids_.push_back(global_id);
   vertex_leaf_.push_back(leaf_of_point(*tree_, root_, p));
   vertex_uses_.push_back(0);
+  free_.push_back(0);
   vertex_prev_.push_back(kNoIndex);
   vertex_next_.push_back(kNoIndex);
   return v;
+}
+
+size_t Front::drop_free_vertices(std::vector<uint32_t>& shrunk) {
+  const size_t dropped = free_count_;
+  for (uint32_t v = 0; v < free_.size() && free_count_ > 0; ++v) {
+    if (!free_[v]) continue;
+    free_[v] = 0;
+    --free_count_;
+    release_vertex(v, shrunk);
+  }
+  return dropped;
 }
 
 void Front::remove_last_vertex() {
@@ -241,6 +267,7 @@ void Front::remove_last_vertex() {
   global_ids_.pop_back();
   vertex_leaf_.pop_back();
   vertex_uses_.pop_back();
+  free_.pop_back();
   vertex_prev_.pop_back();
   vertex_next_.pop_back();
 }

@@ -5,7 +5,10 @@
 //  - vertices: the InitialFront's joint numbering unchanged, then the
 //    vertices appended by add_vertex (coordinates, global ids, the leaf
 //    whose half-open box contains each); a vertex is a front vertex while
-//    at least one alive face uses it;
+//    at least one alive face uses it, or while it is free: the
+//    InitialFront's free vertices (gap_vertices.hpp) are front vertices,
+//    listed in their leaves as targets, from the start until a face first
+//    uses them (or drop_free_vertices);
 //  - faces: 3 vertex indices each, counterclockwise seen from the unmeshed
 //    region (normal (b-a)x(c-a) into it), with an alive flag and a float
 //    bounding box rounded outward (for cheap rejections); closed faces
@@ -85,8 +88,11 @@ class Front {
   const std::vector<double>& xyz() const { return xyz_; }
   const std::vector<uint64_t>& global_ids() const { return global_ids_; }
   uint32_t vertex_leaf(uint32_t v) const { return vertex_leaf_[v]; }
-  // Number of alive faces using vertex v (0: not a front vertex).
+  // Number of alive faces using vertex v, plus one while v is free (0: not
+  // a front vertex).
   uint32_t vertex_uses(uint32_t v) const { return vertex_uses_[v]; }
+  // Front vertices that no face has used yet.
+  size_t num_free_vertices() const { return free_count_; }
 
   // Face slots, alive or closed.
   size_t num_face_slots() const { return alive_.size(); }
@@ -136,6 +142,10 @@ class Front {
   // index. It becomes a front vertex, listed in that leaf, once a face uses
   // it.
   uint32_t add_vertex(const double* p, uint64_t global_id);
+  // Takes the free vertices off the front (they stay, unused, in the vertex
+  // arrays) and returns how many there were; the leaves that lost a vertex
+  // are appended to `shrunk`.
+  size_t drop_free_vertices(std::vector<uint32_t>& shrunk);
   // Removes the last vertex, which no face may have used (undoes add_vertex).
   void remove_last_vertex();
 
@@ -188,6 +198,8 @@ class Front {
   std::vector<uint64_t> global_ids_;
   std::vector<uint32_t> vertex_leaf_;
   std::vector<uint32_t> vertex_uses_;
+  std::vector<uint8_t> free_;  // per vertex: free (listed, used by no face yet)
+  size_t free_count_ = 0;
   std::vector<uint32_t> vertex_prev_;  // in the leaf's vertex list
   std::vector<uint32_t> vertex_next_;
   std::vector<uint32_t> leaf_vertex_head_;

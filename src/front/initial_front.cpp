@@ -39,6 +39,23 @@ void add_core_faces(const LinearOctree& tree, const TemplateCore& core,
   }
 }
 
+// Front vertices leaf by leaf (the used ones and the free ones): a
+// counting sort by leaf, stable in index.
+void list_front_vertices(InitialFront& front, size_t leaves) {
+  const size_t n = front.vertex_leaf.size();
+  std::vector<char> listed(n, 0);
+  for (uint32_t v : front.faces) listed[v] = 1;
+  std::fill(listed.end() - static_cast<std::ptrdiff_t>(front.free_vertices), listed.end(), 1);
+  front.leaf_first_front_vertex.assign(leaves + 1, 0);
+  for (size_t v = 0; v < n; ++v)
+    if (listed[v]) ++front.leaf_first_front_vertex[front.vertex_leaf[v] + 1];
+  for (size_t i = 0; i < leaves; ++i) front.leaf_first_front_vertex[i + 1] += front.leaf_first_front_vertex[i];
+  front.front_vertices.resize(front.leaf_first_front_vertex[leaves]);
+  std::vector<uint32_t> next(front.leaf_first_front_vertex.begin(), front.leaf_first_front_vertex.end() - 1);
+  for (size_t v = 0; v < n; ++v)
+    if (listed[v]) front.front_vertices[next[front.vertex_leaf[v]]++] = static_cast<uint32_t>(v);
+}
+
 }  // namespace
 
 uint32_t leaf_of_point(const LinearOctree& tree, const RootCube& root, const double* p) {
@@ -79,20 +96,21 @@ InitialFront make_initial_front(const LinearOctree& tree, const RootCube& root,
   front.surface_faces = surface.num_triangles();
   add_core_faces(tree, core, front.faces);
 
-  // Front vertices leaf by leaf: a counting sort by leaf, stable in index.
-  std::vector<char> used(nc + ns, 0);
-  for (uint32_t v : front.faces) used[v] = 1;
-  front.leaf_first_front_vertex.assign(tree.size() + 1, 0);
-  for (size_t v = 0; v < nc + ns; ++v)
-    if (used[v]) ++front.leaf_first_front_vertex[front.vertex_leaf[v] + 1];
-  for (size_t i = 0; i < tree.size(); ++i)
-    front.leaf_first_front_vertex[i + 1] += front.leaf_first_front_vertex[i];
-  front.front_vertices.resize(front.leaf_first_front_vertex[tree.size()]);
-  std::vector<uint32_t> next(front.leaf_first_front_vertex.begin(),
-                             front.leaf_first_front_vertex.end() - 1);
-  for (size_t v = 0; v < nc + ns; ++v)
-    if (used[v]) front.front_vertices[next[front.vertex_leaf[v]]++] = static_cast<uint32_t>(v);
+  list_front_vertices(front, tree.size());
   return front;
+}
+
+void add_free_vertices(InitialFront& front, const LinearOctree& tree, const std::vector<double>& xyz,
+                       const std::vector<uint64_t>& ids, const std::vector<uint32_t>& leaf) {
+  const size_t n = leaf.size();
+  PARTET_ASSERT(xyz.size() == 3 * n && ids.size() == n, "free vertex arrays disagree");
+  PARTET_ASSERT(front.vertex_leaf.size() + n < UINT32_MAX, "more than 2^32 - 1 front vertices");
+  for (uint32_t i : leaf) PARTET_ASSERT(i < tree.size(), "free vertex leaf out of range");
+  front.xyz.insert(front.xyz.end(), xyz.begin(), xyz.end());
+  front.global_ids.insert(front.global_ids.end(), ids.begin(), ids.end());
+  front.vertex_leaf.insert(front.vertex_leaf.end(), leaf.begin(), leaf.end());
+  front.free_vertices += n;
+  list_front_vertices(front, tree.size());
 }
 
 SurfaceMesh front_surface(const InitialFront& front) {

@@ -16,8 +16,12 @@
 // surface's vertices in the surface's order. Global ids: a core vertex has
 // its lattice Morton key (below 2^63), surface vertex s has
 // kSurfaceVertexId | s. Every vertex knows the leaf whose half-open box
-// contains it, and the front vertices (those used by front faces) are
-// listed leaf by leaf.
+// contains it, and the front vertices (those used by front faces, and the
+// free ones) are listed leaf by leaf.
+//
+// Free vertices come last (add_free_vertices): points inside the unmeshed
+// region that no face uses yet, given to the removals as targets (the gap
+// vertices, gap_vertices.hpp).
 #pragma once
 
 #include <cstddef>
@@ -43,6 +47,7 @@ struct InitialFront {
   // faces, leaf by leaf in tet order.
   std::vector<uint32_t> faces;
   size_t surface_faces = 0;
+  size_t free_vertices = 0;  // the last free_vertices vertices: used by no face
   // Per leaf + 1: the front vertices contained in leaf i are
   // front_vertices[leaf_first_front_vertex[i] .. leaf_first_front_vertex[i+1]),
   // ascending.
@@ -60,6 +65,12 @@ uint32_t leaf_of_point(const LinearOctree& tree, const RootCube& root, const dou
 // diagnosed (outward oriented) surface the tree was built from.
 InitialFront make_initial_front(const LinearOctree& tree, const RootCube& root,
                                 const TemplateCore& core, const SurfaceMesh& surface);
+
+// Appends free vertices at `xyz` (3 per vertex) with global ids `ids`
+// (disjoint from the others), each in the leaf given by `leaf` (which must
+// contain it), and lists them as front vertices.
+void add_free_vertices(InitialFront& front, const LinearOctree& tree, const std::vector<double>& xyz,
+                       const std::vector<uint64_t>& ids, const std::vector<uint32_t>& leaf);
 
 // The front as a surface mesh of its faces and the vertices they use (for
 // --front-out), in the front's face order and joint vertex order.
