@@ -65,6 +65,10 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
       ->check(CLI::IsMember({"surface", "templates"}))->type_name("STEP");
   app.add_option("--front-out", o.front_out, "Write the initial front (surface + core faces) as a surface file")
       ->type_name("FILE");
+  bool no_gap_vertices = false;
+  app.add_flag("--no-gap-vertices", no_gap_vertices,
+               "Give the face removals no vertices at the centres of the leaves between the surface and the "
+               "templated core (faster on thin CAD walls, worse tets elsewhere)");
   bool no_treeless = false;
   app.add_flag("--no-treeless", no_treeless,
                "Skip the tree-less face removals (new vertices, tet deletion): what the tree-supported removals "
@@ -88,6 +92,7 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   if (int code = parse(app, argc, argv, comm); code >= 0) return code;
   if (no_optimize) o.optimize_passes = 0;
   o.treeless = !no_treeless;
+  o.gap_vertices = !no_gap_vertices;
   if (partitioner == "rob") o.partitioner = partet::BisectionMethod::kRob;
   if (partitioner == "rib") o.partitioner = partet::BisectionMethod::kRib;
   if (stop == "surface") o.stop_after = partet::StopAfter::kSurface;

@@ -438,11 +438,22 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
   added.clear();
   shrunk.clear();
   front.apply_tet(f, p, added, shrunk, cover);
+  mark_done_leaves(front, tree, shrunk);
+}
+
+void mark_done_leaves(const Front& front, LinearOctree& tree, const std::vector<uint32_t>& shrunk) {
   for (uint32_t leaf : shrunk) {
     LeafClass& cls = tree.cls[leaf];
     if ((cls == LeafClass::kBoundary || cls == LeafClass::kTooClose) && front.leaf_front_empty(leaf))
       cls = LeafClass::kDone;
   }
+}
+
+size_t drop_free_vertices(Front& front, LinearOctree& tree) {
+  std::vector<uint32_t> shrunk;
+  const size_t dropped = front.drop_free_vertices(shrunk);
+  mark_done_leaves(front, tree, shrunk);
+  return dropped;
 }
 
 RemovalCounts remove_faces_tree_supported(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,

@@ -129,6 +129,13 @@ struct RemovalCounts {
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
                       std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk, const LeafCover* cover = nullptr);
 
+// Reclassifies the boundary and too-close leaves of `shrunk` whose front
+// is empty as kDone.
+void mark_done_leaves(const Front& front, LinearOctree& tree, const std::vector<uint32_t>& shrunk);
+
+// Front::drop_free_vertices, then mark_done_leaves; the number dropped.
+size_t drop_free_vertices(Front& front, LinearOctree& tree);
+
 // `front` must be built over `tree` and `root`. `out` receives the tets,
 // numbered in the front's vertex numbering: its vertices must be a prefix
 // of the front's (e.g. the template core, or empty); the missing front

@@ -19,6 +19,7 @@
 #include "core/point_text.hpp"
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
+#include "front/gap_vertices.hpp"
 #include "front/initial_front.hpp"
 #include "front/treeless_removal.hpp"
 #include "io/file_bytes.hpp"
@@ -68,6 +69,10 @@ ojson options_json(const MeshOptions& o) {
   j["too_close"] = o.too_close;
   j["min_core"] = o.min_core;
   j["partitioner"] = bisection_name(o.partitioner);
+  j["gap_vertices"] = o.gap_vertices;
+  j["treeless"] = o.treeless;
+  j["optimize"] = o.optimize_passes;
+  j["quality_target"] = o.quality_target;
   j["ascii"] = o.ascii;
   if (!o.front_out.empty()) j["front_out"] = o.front_out;
   return j;
@@ -496,12 +501,17 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
     report.run_step("initial front", [&] {
       if (!root_rank || !s.whole_on_root) return ojson::object();
       s.initial_front = make_initial_front(s.tree, s.root, s.core, s.surface);
+      if (options.gap_vertices) {
+        const GapVertices gap = gap_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close);
+        add_free_vertices(s.initial_front, s.tree, gap.xyz, gap.global_ids, gap.leaf);
+      }
       const InitialFront& front = s.initial_front;
       if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
       ojson c;
       c["faces"] = front.num_faces();
       c["surface faces"] = front.surface_faces;
       c["core faces"] = front.num_faces() - front.surface_faces;
+      c["gap vertices"] = front.free_vertices;
       return c;
     });
     if (options.stop_after == StopAfter::kTemplates) {
@@ -529,6 +539,10 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
         shaped.min_quality = kShapedRemovalQuality;
         const RemovalCounts first = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, shaped);
         const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, {}, nullptr, &memo);
+        // Gap vertices no tet took are dropped: the tree-less removals place
+        // their own where a cavity needs one, and a free vertex inside a
+        // cavity would only block its fills.
+        const size_t unused = drop_free_vertices(*front, s.tree);
         ojson c;
         // The closed faces (most slots by now) go before the tree-less
         // removals allocate theirs.
@@ -538,6 +552,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
         c["passes"] = first.passes + n.passes;
         c["checks"] = first.checks + n.checks;
         c["checks skipped"] = first.skipped_checks + n.skipped_checks;
+        c["gap vertices used"] = s.initial_front.free_vertices - unused;
         return c;
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {

@@ -28,6 +28,7 @@ struct MeshOptions {
   BisectionMethod partitioner = BisectionMethod::kMrob;       // --partitioner rob|rib|mrob: boundary leaves (P > 1)
   int optimize_passes = 3;     // --optimize N: quality optimization passes (0, or --no-optimize: none)
   double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone
+  bool gap_vertices = true;   // --no-gap-vertices: no vertices at leaf centres in the gap (gap_vertices.hpp)
   bool treeless = true;       // --no-treeless: stop after the tree-supported removals
   bool keep_partial = false;  // --keep-partial: on exit 3, write the tets made and the front left
   bool ascii = false;     // --ascii: text Gmsh output

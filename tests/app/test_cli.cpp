@@ -188,7 +188,10 @@ nlohmann::json report_step(const nlohmann::json& report, const std::string& name
 TEST(Cli, ThinBodyGetsAFinerCore) {
   // The ellipsoid's 320 triangles leave no leaf far enough from the surface
   // for a core: its sizes are refined once, and the tets across the body
-  // give way to a core and much better angles.
+  // give way to a core and much better tets (mean radius ratio 0.70 ->
+  // 0.78, smallest angle 30.9 -> 31.4 degrees; 9.5 -> 29.1 degrees and
+  // 0.50 -> 0.73 before gap vertices gave the unrefined body vertices of
+  // its own).
   std::string dir = scratch_dir("cli_thin");
   const std::string in = data_path("good/ellipsoid.off");
   auto r = run_partet(in + " -o " + dir + "/e.vtu --quiet --report " + dir + "/e.json");
@@ -206,9 +209,11 @@ TEST(Cli, ThinBodyGetsAFinerCore) {
   EXPECT_TRUE(report_step(o, "refine thin core").is_null());
   EXPECT_GT(report_step(j, "template interior")["counts"]["leaves"].get<int>(), 0);
   EXPECT_EQ(report_step(o, "template interior")["counts"]["leaves"].get<int>(), 0);
-  const double angle = report_step(j, "optimize")["counts"]["min dihedral after"].get<double>();
-  const double plain = report_step(o, "optimize")["counts"]["min dihedral after"].get<double>();
-  EXPECT_GT(angle, plain + 5) << angle << " vs " << plain;
+  const auto after = [](const nlohmann::json& report, const char* what) {
+    return report_step(report, "optimize")["counts"][std::string(what) + " after"].get<double>();
+  };
+  EXPECT_GE(after(j, "min dihedral"), after(o, "min dihedral"));
+  EXPECT_GT(after(j, "mean radius ratio"), after(o, "mean radius ratio") + 0.05);
 }
 
 TEST(Cli, AFrontThatDoesNotCloseOnTheRefinedTreeIsMeshedOnTheFirst) {
