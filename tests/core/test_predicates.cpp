@@ -220,6 +220,16 @@ Tet near_coplanar(std::mt19937_64& rng, double offset, double scale) {
 
 // ---- Tests -------------------------------------------------------------------
 
+// The build's contract with expansion.hpp: every product is rounded before
+// it is added (no fused multiply-add). With x = 1 + 2^-30, x * x is
+// 1 + 2^-29 + 2^-60, which rounds to 1 + 2^-29; a contracted x * x - y
+// would keep the 2^-60. Volatile inputs keep the compiler from folding it.
+TEST(Predicates, BuildRoundsEveryProduct) {
+  volatile double vx = 1 + 0x1p-30, vy = 1 + 0x1p-29;
+  const double x = vx, y = vy;
+  EXPECT_EQ(x * x - y, 0.0) << "products are fused into sums: build with -ffp-contract=off";
+}
+
 TEST(Predicates, BasicSigns) {
   const double a[2] = {0, 0}, b[2] = {1, 0}, c[2] = {0, 1}, d[2] = {2, 0};
   EXPECT_EQ(orient2d(a, b, c), 1);
