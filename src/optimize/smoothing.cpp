@@ -280,15 +280,17 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     for (int i = 0; i < 3; ++i) centroid[i] += topo.point(u)[i] / static_cast<double>(around.size());
   // Tets under 10 degrees count as slivers: their number may not grow.
   const double sliver = quality_of_angle(10);
-  double worst = std::numeric_limits<double>::infinity(), sum = 0;
+  double worst = std::numeric_limits<double>::infinity();
   int slivers = 0;
   for (size_t k = 0; k < n; ++k) {
     const double q = topo.quality(scratch.star[k]);
     worst = std::min(worst, q);
     slivers += q < sliver;
-    sum += star.radius_ratio(k, topo.point(v));
   }
   const double* x = topo.point(v);
+  // The star's radius ratio sum at x, taken when a trial first needs it
+  // (most vertices fail every trial on the qualities).
+  double sum = -1;
   double odt[3];
   const bool has_odt = odt_point(topo, scratch.star, odt);
   const double* targets[2] = {odt, centroid};
@@ -307,6 +309,10 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
         trial_slivers += q < sliver;
       }
       if (!keeps || trial_slivers > slivers) continue;
+      if (sum < 0) {
+        sum = 0;
+        for (size_t k = 0; k < n; ++k) sum += star.radius_ratio(k, x);
+      }
       double trial_sum = 0;
       for (size_t k = 0; k < n; ++k) trial_sum += star.radius_ratio(k, y);
       if (trial_sum > sum && star.positive(y)) {
