@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "check/quality.hpp"
 #include "core/distance.hpp"
@@ -287,6 +288,15 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     worst = std::min(worst, q);
     slivers += q < sliver;
   }
+  // The trials test the star's tets worst first: those are the likeliest
+  // to drop below the worst (the verdict does not depend on the order).
+  std::vector<size_t>& order = scratch.order;
+  order.resize(n);
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
+    const double qi = topo.quality(scratch.star[i]), qj = topo.quality(scratch.star[j]);
+    return qi != qj ? qi < qj : i < j;
+  });
   const double* x = topo.point(v);
   // The star's radius ratio sum at x, taken when a trial first needs it
   // (most vertices fail every trial on the qualities).
@@ -303,8 +313,8 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
                            x[2] + step * (target[2] - x[2])};
       int trial_slivers = 0;
       bool keeps = true;
-      for (size_t k = 0; k < n && keeps; ++k) {
-        const double q = star.quality(k, y);
+      for (size_t i = 0; i < n && keeps; ++i) {
+        const double q = star.quality(order[i], y);
         keeps = q >= worst;
         trial_slivers += q < sliver;
       }
