@@ -53,12 +53,7 @@ GapVertices gap_vertices(const LinearOctree& tree, const RootCube& root, const S
     Reach r;
     r.t = t;
     r.reach = gap * (vertex_size[v[0]] + vertex_size[v[1]] + vertex_size[v[2]]) / 3;
-    double lo[3], hi[3];
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min({surface.point(v[0])[k], surface.point(v[1])[k], surface.point(v[2])[k]}) - r.reach;
-      hi[k] = std::max({surface.point(v[0])[k], surface.point(v[1])[k], surface.point(v[2])[k]}) + r.reach;
-    }
-    grid_range(root, lo, hi, r.lo, r.hi);
+    triangle_grid_range(root, surface.point(v[0]), surface.point(v[1]), surface.point(v[2]), r.reach, r.lo, r.hi);
     return r;
   };
   const LeafRangeQuery query(tree);

@@ -96,12 +96,7 @@ void mark_too_close(LinearOctree& tree, const SurfaceMesh& s, const RootCube& ro
     r.size = (vertex_size[v[0]] + vertex_size[v[1]] + vertex_size[v[2]]) / 3;
     r.cap = octant_edge(bins.coarsest[t]) * root.unit;
     const double reach = factor * std::max(r.size, r.cap);
-    double lo[3], hi[3];
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min({s.point(v[0])[i], s.point(v[1])[i], s.point(v[2])[i]}) - reach;
-      hi[i] = std::max({s.point(v[0])[i], s.point(v[1])[i], s.point(v[2])[i]}) + reach;
-    }
-    grid_range(root, lo, hi, r.lo, r.hi);
+    triangle_grid_range(root, s.point(v[0]), s.point(v[1]), s.point(v[2]), reach, r.lo, r.hi);
     return r;
   };
   const LeafRangeQuery query(tree);

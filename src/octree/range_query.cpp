@@ -160,15 +160,20 @@ void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std
   }
 }
 
+void triangle_grid_range(const RootCube& root, const double* a, const double* b, const double* c, double reach,
+                         uint32_t* lo, uint32_t* hi) {
+  double blo[3], bhi[3];
+  for (int i = 0; i < 3; ++i) {
+    blo[i] = std::min({a[i], b[i], c[i]}) - reach;
+    bhi[i] = std::max({a[i], b[i], c[i]}) + reach;
+  }
+  grid_range(root, blo, bhi, lo, hi);
+}
+
 void leaves_over_triangle_box(const LeafRangeQuery& query, const RootCube& root, const double* a, const double* b,
                               const double* c, std::vector<size_t>& out) {
-  double lo[3], hi[3];
-  for (int i = 0; i < 3; ++i) {
-    lo[i] = std::min({a[i], b[i], c[i]});
-    hi[i] = std::max({a[i], b[i], c[i]});
-  }
   uint32_t glo[3], ghi[3];
-  grid_range(root, lo, hi, glo, ghi);
+  triangle_grid_range(root, a, b, c, 0, glo, ghi);
   query.leaves_in_range(glo, ghi, out);
 }
 

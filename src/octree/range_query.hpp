@@ -25,6 +25,11 @@ namespace partet {
 // despite rounding in the conversion to grid units.
 void grid_range(const RootCube& root, const double* blo, const double* bhi, uint32_t* lo, uint32_t* hi);
 
+// The grid cells (as grid_range) over triangle (a, b, c)'s bounding box
+// grown by `reach` on every side.
+void triangle_grid_range(const RootCube& root, const double* a, const double* b, const double* c, double reach,
+                         uint32_t* lo, uint32_t* hi);
+
 class LeafRangeQuery {
  public:
   // Keeps a reference to `tree` (complete), which must not change while the
