@@ -1,7 +1,7 @@
 // face_flip and edge_removal (see flips.hpp). The edge removal table is
 // best[i][k] = max over i < j < k of min(Q(i, j, k), best[i][j], best[j][k])
 // with best[i][i+1] = +inf, Q the worse of the two tets of triangle (i, j, k),
-// or -inf when either is not positive; O(n^3) for n <= 7, run only when the
+// or -inf when either is not positive; O(n^3) for n <= 10, run only when the
 // ring's half-angle bound (flips.hpp) does not rule out beating the bar.
 #include "optimize/flips.hpp"
 

@@ -1,5 +1,5 @@
 // The flips on hand-made configurations: 2-3, 3-2, 4-4, edge removal
-// around rings of 5 to 7 tets and multi-face removal of polygons of 2 to 5
+// around rings of 5 to 10 tets and multi-face removal of polygons of 2 to 5
 // faces each improve the worst tet, keep every tet positive, keep the
 // boundary faces, and leave a valid mesh; the topology's kept tet
 // qualities follow vertex moves and replacements.
@@ -154,7 +154,9 @@ class EdgeRemoval : public testing::TestWithParam<int> {};
 
 TEST_P(EdgeRemoval, RemovesALongEdgeThroughARing) {
   const int n = GetParam();
-  TetMesh m = ring_mesh(n, 1, 0.8, 4);
+  // The longer the ring, the longer the axis must be for its needles to be
+  // worse than the polygon's tets.
+  TetMesh m = ring_mesh(n, 1, 0.8, n <= 8 ? 4 : 8);
   TetTopology topo(m);
   Flip flip;
   ASSERT_TRUE(remove_axis(topo, n, flip));
@@ -164,16 +166,17 @@ TEST_P(EdgeRemoval, RemovesALongEdgeThroughARing) {
   apply_and_check(m, topo, flip);
 }
 
-INSTANTIATE_TEST_SUITE_P(Flips, EdgeRemoval, testing::Values(5, 6, 7));
+INSTANTIATE_TEST_SUITE_P(Flips, EdgeRemoval, testing::Values(5, 6, 7, 8, 9, 10));
 
 TEST(Flips, NoEdgeRemovalOnABoundaryEdgeOrALongRing) {
-  TetMesh m = ring_mesh(8, 1, 1, 0.25);
+  constexpr int n = TetTopology::kMaxRing + 1;
+  TetMesh m = ring_mesh(n, 1, 1, 0.25);
   TetTopology topo(m);
   const uint32_t* v = topo.tet(0);
   Flip flip;
-  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 9), flip));  // 8 tets
+  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, n), local_index(v, n + 1), flip));  // 11 tets
   // Every other edge of the ring tets lies on the boundary.
-  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, 8), local_index(v, 0), flip));
+  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, n), local_index(v, 0), flip));
 }
 
 // Multi-face removal undoes an edge removal that made things worse: around
