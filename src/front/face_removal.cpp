@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/predicates.hpp"
+#include "front/face_queue.hpp"
 #include "front/removal_checks.hpp"
 #include "octree/range_query.hpp"
 #include "octree/sizing.hpp"
@@ -98,18 +99,9 @@ class Remover {
   RemovalMemo& memo_;
   RemovalCounts counts_;
 
-  // Min-heap of (size class, centroid key, face): the smallest faces are
-  // removed first, and faces of one size class in Morton order.
-  struct Queued {
-    uint64_t size_class;
-    uint64_t key;
-    uint32_t face;
-    bool operator>(const Queued& o) const {
-      return std::tie(size_class, key, face) > std::tie(o.size_class, o.key, o.face);
-    }
-  };
-  std::vector<Queued> queue_;
-  void push(uint32_t f);
+  FaceQueue queue_;
+  QueuedFace entry(uint32_t f) const;
+  std::vector<QueuedFace> batch_;  // faces to load into the queue as one run
   std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
   double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
   std::vector<size_t> leaves_;      // over the neighbourhood box: where targets come from
@@ -173,7 +165,7 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
   const LeafCover cover{leaves_, leaf_cells_};
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_, &cover);
   ++counts_.tets;
-  for (uint32_t g : added_) push(g);
+  for (uint32_t g : added_) queue_.push(entry(g));
   memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
@@ -221,7 +213,7 @@ void Remover::drop_garbage_failures() {
   memo_.blocked_pool.swap(kept);
 }
 
-void Remover::push(uint32_t f) {
+QueuedFace Remover::entry(uint32_t f) const {
   const uint32_t* t = front_.face(f);
   const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
   const double size = std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])});
@@ -229,8 +221,7 @@ void Remover::push(uint32_t f) {
   for (int k = 0; k < 3; ++k) centroid[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
   uint32_t cell[3];
   grid_cell(root_, centroid, cell);
-  queue_.push_back({size_class(size), morton_key(cell[0], cell[1], cell[2]), f});
-  std::push_heap(queue_.begin(), queue_.end(), std::greater<Queued>());
+  return {size_class(size), morton_key(cell[0], cell[1], cell[2]), f};
 }
 
 bool Remover::try_face(uint32_t f, bool full) {
@@ -344,13 +335,15 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.assign(front_.num_face_slots(), 0);
   memo_.failure_of.resize(front_.num_face_slots());
+  batch_.clear();
   if (seeds) {
     for (uint32_t f : *seeds)
-      if (front_.alive(f)) push(f);
+      if (front_.alive(f)) batch_.push_back(entry(f));
   } else {
     for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
-      if (front_.alive(f)) push(f);
+      if (front_.alive(f)) batch_.push_back(entry(f));
   }
+  queue_.load(batch_);
   std::vector<uint32_t> waiting;
   bool full = false;  // checking every target of a face, not only the best ones
   while (!queue_.empty()) {
@@ -358,9 +351,7 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
     const size_t made_before = counts_.tets;
     waiting.clear();
     while (!queue_.empty()) {
-      std::pop_heap(queue_.begin(), queue_.end(), std::greater<Queued>());
-      const uint32_t f = queue_.back().face;
-      queue_.pop_back();
+      const uint32_t f = queue_.pop().face;
       if (!front_.alive(f)) continue;
       neighbourhood(f);
       if (neighbourhood_foreign()) {
@@ -387,7 +378,9 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
     const bool productive = (counts_.tets - made_before) * kProductive >= std::max<size_t>(waiting.size(), 1);
     if (full && !productive) break;
     full = !productive;
-    for (uint32_t g : waiting) push(g);
+    batch_.clear();
+    for (uint32_t g : waiting) batch_.push_back(entry(g));
+    queue_.load(batch_);
   }
   for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
     if (front_.alive(f)) {
