@@ -6,9 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <functional>
 #include <limits>
-#include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
