@@ -36,6 +36,7 @@ class FaceQueue {
  public:
   bool empty() const { return next_ == run_.size() && heap_.empty(); }
   // Replaces the run with `batch`, sorted; the queue must be empty.
+  // `batch` gets the old run's storage back, for reuse.
   void load(std::vector<QueuedFace>& batch) {
     PARTET_ASSERT(empty(), "loading a face queue that is not empty");
     std::sort(batch.begin(), batch.end(), [](const QueuedFace& x, const QueuedFace& y) { return y > x; });

@@ -174,7 +174,7 @@ TEST(Flips, NoEdgeRemovalOnABoundaryEdgeOrALongRing) {
   TetTopology topo(m);
   const uint32_t* v = topo.tet(0);
   Flip flip;
-  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, n), local_index(v, n + 1), flip));  // 11 tets
+  EXPECT_FALSE(edge_removal(topo, 0, local_index(v, n), local_index(v, n + 1), flip));  // kMaxRing + 1 tets
   // Every other edge of the ring tets lies on the boundary.
   EXPECT_FALSE(edge_removal(topo, 0, local_index(v, n), local_index(v, 0), flip));
 }
