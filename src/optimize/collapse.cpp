@@ -36,12 +36,14 @@ void cone_of(const TetTopology& topo, uint32_t s, uint32_t v, uint32_t w, uint32
 // Screens the cones from w over v's star (`star`), the tets having w
 // skipped: false at the first whose quality is not above `beat` or that is
 // not positive. The tet that failed last goes first (it fails again for
-// more than half the neighbours on CAD parts), then the tets in `order`
-// (worst old quality first: those halve the tests to the first failure).
+// more than half the neighbours on CAD parts), then the tets of
+// `by_quality` ((old quality, star index), ascending: the worst first
+// halve the tests to the first failure).
 // The qualities of the cones go to `quality`, by star index (complete
 // only when true).
-bool cones_beat(const TetTopology& topo, const std::vector<uint32_t>& star, const std::vector<size_t>& order,
-                uint32_t v, uint32_t w, double beat, size_t& last_failed, std::vector<double>& quality) {
+bool cones_beat(const TetTopology& topo, const std::vector<uint32_t>& star,
+                const std::vector<std::pair<double, size_t>>& by_quality, uint32_t v, uint32_t w, double beat,
+                size_t& last_failed, std::vector<double>& quality) {
   auto passes = [&](size_t i) {
     uint32_t cone[4];
     cone_of(topo, star[i], v, w, cone);
@@ -51,7 +53,8 @@ bool cones_beat(const TetTopology& topo, const std::vector<uint32_t>& star, cons
   };
   const size_t first = last_failed;
   if (first < star.size() && local_index(topo.tet(star[first]), w) < 0 && !passes(first)) return false;
-  for (size_t i : order) {
+  for (const auto& entry : by_quality) {
+    const size_t i = entry.second;
     if (i == first || local_index(topo.tet(star[i]), w) >= 0) continue;
     if (!passes(i)) {
       last_failed = i;
@@ -68,7 +71,6 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   const double ten = quality_of_angle(kSliverAngle);
   Collapse best;
   std::vector<uint32_t> star, neighbours, quads, old_quads;
-  std::vector<size_t> order;
   std::vector<std::pair<double, size_t>> by_quality;
   std::vector<double> cone_quality;
   uint32_t corners[4];
@@ -89,14 +91,12 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
     by_quality.clear();
     for (size_t i = 0; i < star.size(); ++i) by_quality.emplace_back(topo.quality(star[i]), i);
     std::sort(by_quality.begin(), by_quality.end());
-    order.clear();
-    for (const auto& entry : by_quality) order.push_back(entry.second);
     cone_quality.resize(star.size());
     size_t last_failed = star.size();
     for (uint32_t w : neighbours) {
       // Only a collapse beating the star's worst and the best so far counts.
       const double beat = std::max(old_quality, best.quality);
-      if (!cones_beat(topo, star, order, v, w, beat, last_failed, cone_quality)) continue;
+      if (!cones_beat(topo, star, by_quality, v, w, beat, last_failed, cone_quality)) continue;
       double new_quality = std::numeric_limits<double>::infinity(), new_deficit = 0;
       int new_slivers = 0;
       quads.clear();
