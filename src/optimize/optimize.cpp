@@ -29,6 +29,7 @@
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/joint_smoothing.hpp"
+#include "optimize/sheet_lift.hpp"
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
@@ -271,7 +272,8 @@ bool smooth_worst_jointly(TetTopology& topo, uint32_t worst, const std::vector<u
 // vertices smoothed, then (when none moves) the free vertices around them
 // smoothed before them again, which counts only when the worst tet gains,
 // then (when that fails too) the free vertices of the near-worst tets
-// around it moved together (smooth_worst_jointly);
+// around it moved together (smooth_worst_jointly), then, for a tet under
+// kSheetAngle, the sheet of nearly flat tets around it lifted (lift_sheet);
 // each change is kept only when the smallest dihedral angle of the tets it
 // changes does not drop and no more of them have one under 10 degrees
 // (min_angle_no_worse), until none of them changes anything or after `rounds`
@@ -352,6 +354,10 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
         changed = topo.quality(worst) > stuck;
       }
       if (!changed && options.smooth_jointly) changed = smooth_worst_jointly(topo, worst, frozen, joint);
+      if (!changed && options.lift_sheets && lift_sheet(topo, worst, frozen)) {
+        ++stats.sheets_lifted;
+        changed = true;
+      }
     }
     if (!changed) break;
   }

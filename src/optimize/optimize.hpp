@@ -47,6 +47,10 @@ struct OptimizeOptions {
   // In the worst-tet rounds, when the insertion's fixed cavities fail,
   // grow one toward room (insertion.hpp, step 6).
   bool grow_cavities = true;
+  // In the worst-tet rounds, when a tet under 1 degree resists all that,
+  // lift the free vertices of the nearly flat tets around it together off
+  // their plane (sheet_lift.hpp).
+  bool lift_sheets = true;
   bool multi_face_sweep = true;  // multi-face removals after the passes
   int relaxation_sweeps = 2;     // radius-ratio relaxation sweeps at the end
   // Rounds on the mesh's worst tet after the passes (flip, insert, smooth
@@ -66,6 +70,7 @@ struct OptimizeStats {
   size_t vertices_removed = 0;  // free vertices a grown cavity took in (insertion.hpp, step 6)
   size_t vertices_moved = 0;
   size_t vertices_relaxed = 0;  // moves of the radius-ratio relaxation
+  size_t sheets_lifted = 0;     // lift_sheet moves in the worst-tet rounds
   int passes = 0;  // passes run
   double seconds = 0;
   // Wall seconds of the parts, summed over the passes; `measure` is the

@@ -634,6 +634,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["vertices removed"] = n.vertices_removed;
           c["vertices moved"] = n.vertices_moved;
           c["vertices relaxed"] = n.vertices_relaxed;
+          c["sheets lifted"] = n.sheets_lifted;
           c["passes"] = n.passes;
           c["topology s"] = n.topology_seconds;
           c["insertion s"] = n.insertion_seconds;
