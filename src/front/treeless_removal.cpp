@@ -99,6 +99,8 @@ class TreelessRemover {
   // breadth-first walk across edges (Front::for_each_face_on_edge); the
   // walk stops past `limit` faces.
   std::vector<uint32_t> component_of(uint32_t f, size_t limit);
+  // A new walk over the face slots: walk_ marks none of them yet.
+  void start_walk();
 
   Front& front_;
   LinearOctree& tree_;
@@ -124,7 +126,7 @@ class TreelessRemover {
   bool restorable_ = true;
   std::vector<uint32_t> components_;
   std::vector<size_t> component_first_;
-  std::vector<uint32_t> walk_mark_;  // per face slot: the walk that last reached it
+  std::vector<uint32_t> walk_mark_;  // per face slot: the walk (component or patch) that last reached it
   uint32_t walk_ = 0;
 };
 
@@ -406,6 +408,8 @@ size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
       if (!front_.alive(seed)) break;
       // Breadth-first patch of alive faces around the seed.
       patch.assign(1, seed);
+      start_walk();
+      walk_mark_[seed] = walk_;
       for (size_t head = 0; head < patch.size() && patch.size() < target; ++head) {
         const uint32_t* t = front_.face(patch[head]);
         for (int i = 0; i < 3 && patch.size() < target; ++i) {
@@ -413,8 +417,10 @@ size_t TreelessRemover::patch_cones(const std::vector<uint32_t>& faces) {
           const uint64_t key = (uint64_t{x} << 32) | y;
           for (auto it = std::lower_bound(edge_face.begin(), edge_face.end(), std::make_pair(key, uint32_t{0}));
                it != edge_face.end() && it->first == key && patch.size() < target; ++it)
-            if (front_.alive(it->second) && std::find(patch.begin(), patch.end(), it->second) == patch.end())
+            if (front_.alive(it->second) && walk_mark_[it->second] != walk_) {
+              walk_mark_[it->second] = walk_;
               patch.push_back(it->second);
+            }
         }
       }
       // The point in the patch's own box when it is deep enough, else in
@@ -553,12 +559,16 @@ void TreelessRemover::find_components() {
   component_first_.push_back(components_.size());
 }
 
-std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
+void TreelessRemover::start_walk() {
   if (walk_mark_.size() < front_.num_face_slots()) walk_mark_.resize(front_.num_face_slots(), 0);
   if (++walk_ == 0) {
     std::fill(walk_mark_.begin(), walk_mark_.end(), 0);
     walk_ = 1;
   }
+}
+
+std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
+  start_walk();
   std::vector<uint32_t> faces = {f};
   walk_mark_[f] = walk_;
   for (size_t head = 0; head < faces.size() && faces.size() <= limit; ++head) {
