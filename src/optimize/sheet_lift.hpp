@@ -12,13 +12,15 @@
 // tet's orientation determinant is an affine function of the s: the
 // determinant is linear in each of its rows, and every term with two rows
 // along n vanishes. So the displacements that maximise the smallest
-// determinant over the tets around the vertices, each divided by its
-// scale (the cube of its root-mean-square edge: a height per edge length),
-// solve a linear program (core/linear_program.hpp) with |s_i| at most half
-// the mean edge length at v_i. The move is kept only when every tet around
-// the vertices is positive by exact orient3d and their smallest dihedral
-// angle rises (a move of half or a quarter of the solution is tried when
-// the whole one is not kept).
+// determinant over the tets around the vertices, each divided by its sine
+// scale (max over its edges of 4 A_i A_j / l_e, the areas of the two faces
+// at the edge and its length, taken at the current shape: the quotient is
+// then the smallest sine of its dihedral angles), solve a linear program
+// (core/linear_program.hpp) with |s_i| at most half the mean edge length
+// at v_i. The move is kept only when every tet around the vertices is
+// positive by exact orient3d, their smallest dihedral angle rises and no
+// more of them have one under 10 degrees (a move of half or a quarter of
+// the solution is tried when the whole one is not kept).
 #pragma once
 
 #include <cstdint>
