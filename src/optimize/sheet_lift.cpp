@@ -94,78 +94,80 @@ bool all_positive(const TetTopology& topo, const std::vector<uint32_t>& region) 
   return true;
 }
 
-}  // namespace
+// The linear program of the file comment for moving `vertices` along
+// `normal` (`region`: the tets of their stars): maximise c.x subject to
+// a x <= b, x >= 0, with x the up and down parts of each displacement,
+// then t. `now`: the smallest quotient before the move. False when a tet
+// of the region is not positive in doubles or has no sine scale.
+struct SheetProgram {
+  std::vector<double> a, b, c;
+  double now = 0;
+};
 
-bool lift_sheet(TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& frozen) {
-  const double flat = quality_of_angle(kSheetAngle);
-  const double worst_quality = topo.quality(worst);
-  if (!(worst_quality < flat)) return false;
-  std::vector<uint32_t> vertices, region, quads;
-  tied_vertices(topo, worst, frozen, flat - worst_quality, kMaxVertices, vertices);
-  double normal[3] = {0, 0, 0};
-  if (vertices.empty() || !largest_face_normal(topo, worst, normal)) return false;
-  joint_region(topo, vertices, region);
-
+bool sheet_program(const TetTopology& topo, const std::vector<uint32_t>& vertices,
+                   const std::vector<uint32_t>& region, const double normal[3], SheetProgram& lp) {
   const size_t k = vertices.size(), r = region.size(), columns = 2 * k + 1, rows = r + 2 * k + 1;
-  std::vector<double> a(rows * columns, 0.0), b(rows, 0.0), c(columns, 0.0);
+  lp.a.assign(rows * columns, 0.0);
+  lp.b.assign(rows, 0.0);
+  lp.c.assign(columns, 0.0);
+  lp.c[2 * k] = 1;  // maximise t
   std::vector<double> edge_sum(k, 0.0);
   std::vector<int> edge_count(k, 0);
-  c[2 * k] = 1;  // maximise t
-  double now = 0;  // the smallest scaled determinant before the move
   for (size_t i = 0; i < r; ++i) {
     const uint32_t* t = topo.tet(region[i]);
     const double* p[4] = {topo.point(t[0]), topo.point(t[1]), topo.point(t[2]), topo.point(t[3])};
-    int slot[4];
-    for (int j = 0; j < 4; ++j) {
-      const auto it = std::find(vertices.begin(), vertices.end(), t[j]);
-      slot[j] = it == vertices.end() ? -1 : static_cast<int>(it - vertices.begin());
-    }
-    for (int j = 0; j < 4; ++j) {
-      if (slot[j] < 0) continue;
-      for (int l = 0; l < 4; ++l)
-        if (l != j) {
-          edge_sum[static_cast<size_t>(slot[j])] += distance(p[j], p[l]);
-          ++edge_count[static_cast<size_t>(slot[j])];
-        }
-    }
     const double scale = sine_scale(p);
     const double now_i = orient3d_value(p[0], p[1], p[2], p[3]);
     if (!(now_i > 0) || !std::isfinite(scale)) return false;
-    b[i] = now_i / scale;
-    now = i == 0 ? b[i] : std::min(now, b[i]);
-    double* row = &a[i * columns];
+    lp.b[i] = now_i / scale;
+    lp.now = i == 0 ? lp.b[i] : std::min(lp.now, lp.b[i]);
+    double* row = &lp.a[i * columns];
     row[2 * k] = 1;
     for (int j = 0; j < 4; ++j) {
-      if (slot[j] < 0) continue;
+      const auto it = std::find(vertices.begin(), vertices.end(), t[j]);
+      if (it == vertices.end()) continue;
+      const auto s = static_cast<size_t>(it - vertices.begin());
+      for (int l = 0; l < 4; ++l)
+        if (l != j) {
+          edge_sum[s] += distance(p[j], p[l]);
+          ++edge_count[s];
+        }
       const double moved[3] = {p[j][0] + normal[0], p[j][1] + normal[1], p[j][2] + normal[2]};
       const double* q[4] = {p[0], p[1], p[2], p[3]};
       q[j] = moved;
       const double gain = (orient3d_value(q[0], q[1], q[2], q[3]) - now_i) / scale;
-      row[2 * static_cast<size_t>(slot[j])] -= gain;
-      row[2 * static_cast<size_t>(slot[j]) + 1] += gain;
+      row[2 * s] -= gain;
+      row[2 * s + 1] += gain;
     }
   }
   for (size_t s = 0; s < k; ++s) {
     const double reach = edge_count[s] > 0 ? kMaxMove * edge_sum[s] / edge_count[s] : 0;
-    a[(r + 2 * s) * columns + 2 * s] = 1;
-    b[r + 2 * s] = reach;
-    a[(r + 2 * s + 1) * columns + 2 * s + 1] = 1;
-    b[r + 2 * s + 1] = reach;
+    lp.a[(r + 2 * s) * columns + 2 * s] = 1;
+    lp.b[r + 2 * s] = reach;
+    lp.a[(r + 2 * s + 1) * columns + 2 * s + 1] = 1;
+    lp.b[r + 2 * s + 1] = reach;
   }
-  a[(rows - 1) * columns + 2 * k] = 1;
-  b[rows - 1] = 1;  // t is a sine
-  const LpResult lp = maximise_lp(a, b, c);
-  if (lp.status != LpStatus::kOptimal || !(lp.objective > now)) return false;
+  lp.a[(rows - 1) * columns + 2 * k] = 1;
+  lp.b[rows - 1] = 1;  // t is a sine
+  return true;
+}
 
+// Moves each of `vertices` by its `shift` along `normal`, else by half or
+// a quarter of it, kept as lift_sheet keeps a move; true if kept, else the
+// vertices are back where they were.
+bool try_shifts(TetTopology& topo, const std::vector<uint32_t>& vertices, const std::vector<uint32_t>& region,
+                const double normal[3], const std::vector<double>& shift) {
+  std::vector<uint32_t> quads;
   topo.tet_vertices(region, quads);
   const AngleSummary before = summarize_angles(topo, quads);
+  const size_t k = vertices.size();
   std::vector<double> old_positions(3 * k);
   for (size_t s = 0; s < k; ++s) std::copy_n(topo.point(vertices[s]), 3, &old_positions[3 * s]);
   for (const double fraction : kFractions) {
     for (size_t s = 0; s < k; ++s) {
-      const double shift = fraction * (lp.x[2 * s] - lp.x[2 * s + 1]);
       const double* old = &old_positions[3 * s];
-      const double x[3] = {old[0] + shift * normal[0], old[1] + shift * normal[1], old[2] + shift * normal[2]};
+      const double step = fraction * shift[s];
+      const double x[3] = {old[0] + step * normal[0], old[1] + step * normal[1], old[2] + step * normal[2]};
       topo.move_vertex(vertices[s], x);
     }
     if (all_positive(topo, region)) {
@@ -175,6 +177,26 @@ bool lift_sheet(TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& f
   }
   for (size_t s = 0; s < k; ++s) topo.move_vertex(vertices[s], &old_positions[3 * s]);
   return false;
+}
+
+}  // namespace
+
+bool lift_sheet(TetTopology& topo, uint32_t worst, const std::vector<uint8_t>& frozen) {
+  const double flat = quality_of_angle(kSheetAngle);
+  const double worst_quality = topo.quality(worst);
+  if (!(worst_quality < flat)) return false;
+  std::vector<uint32_t> vertices, region;
+  tied_vertices(topo, worst, frozen, flat - worst_quality, kMaxVertices, vertices);
+  double normal[3] = {0, 0, 0};
+  if (vertices.empty() || !largest_face_normal(topo, worst, normal)) return false;
+  joint_region(topo, vertices, region);
+  SheetProgram program;
+  if (!sheet_program(topo, vertices, region, normal, program)) return false;
+  const LpResult lp = maximise_lp(program.a, program.b, program.c);
+  if (lp.status != LpStatus::kOptimal || !(lp.objective > program.now)) return false;
+  std::vector<double> shift(vertices.size());
+  for (size_t s = 0; s < shift.size(); ++s) shift[s] = lp.x[2 * s] - lp.x[2 * s + 1];
+  return try_shifts(topo, vertices, region, normal, shift);
 }
 
 }  // namespace partet
