@@ -57,11 +57,15 @@ LpResult maximise_lp(const std::vector<double>& a, const std::vector<double>& b,
     const double pivot = row[1 + enter];
     for (size_t k = 0; k < w; ++k) row[k] /= -pivot;
     row[1 + enter] = 1.0 / pivot;  // coefficient of the leaving variable
+    // The entering variable's column becomes f times the leaving one's
+    // coefficient (0 + f * row, as if cleared first); written after the
+    // row's update, not cleared before it: a scalar store followed by a
+    // wide load over it stalled store forwarding on every row.
     auto substitute = [&](double* other) {
       const double f = other[1 + enter];
       if (f == 0) return;
-      other[1 + enter] = 0;
       for (size_t k = 0; k < w; ++k) other[k] += f * row[k];
+      other[1 + enter] = 0.0 + f * row[1 + enter];
     };
     for (size_t i = 0; i < m; ++i)
       if (i != leave) substitute(&d[i * w]);
