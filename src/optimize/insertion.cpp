@@ -42,6 +42,13 @@ constexpr size_t kGrowTets = 96;
 // Outer faces nearer the kernel's deepest point than this many times its
 // depth hold it down: step 6 grows across them.
 constexpr double kTight = 2;
+// Step 6's cavity toward a point above a face grows at most this many
+// times, and no further once it has more than this many tets: under a
+// sheet of flat tets on a planar part of the surface (joint r3: 89 tets
+// under 1e-6 degrees, all their corners on one plane) it needs 40 to 200
+// tets, reached a few at a time.
+constexpr int kRiseRounds = 48;
+constexpr size_t kRiseTets = 384;
 
 // `items` sorted, duplicates dropped: membership by binary search (a
 // cavity around a tet's four vertices has about 70 tets).
@@ -313,12 +320,32 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
     }
     cavity.insert(cavity.end(), join.begin(), join.end());
   }
+  // A flat tet off the boundary (its corners on one plane, as surface
+  // vertices of a planar face can be after the removals) has no boundary
+  // face to rise from: its largest face, on either side, takes that part.
+  int lifted_face = -1;
+  if (topo.quality(t) < quality_of_angle(kDegenerateAngle)) {
+    double largest = 0;
+    for (int f = 0; f < 4; ++f) {
+      if (topo.twin(4 * t + f) == TetTopology::kNone) {
+        lifted_face = -1;
+        break;
+      }
+      const double area = face_frame(topo, t, f).twice_area;
+      if (area > largest) {
+        largest = area;
+        lifted_face = f;
+      }
+    }
+  }
   for (int f = 0; f < 4; ++f) {
     double p[3];
-    for (double scale : {1.0, 0.5}) {
-      if (topo.twin(4 * t + f) != TetTopology::kNone || !point_above_face(topo, t, f, scale, p)) break;
+    const bool lifted = f == lifted_face;
+    for (double scale : {1.0, 0.5, -1.0, -0.5}) {
+      if (!lifted && scale < 0) break;
+      if ((!lifted && topo.twin(4 * t + f) != TetTopology::kNone) || !point_above_face(topo, t, f, scale, p)) break;
       cavity = start;
-      for (int round = 0; round < 2 * kGrowRounds && cavity.size() <= kGrowTets; ++round) {
+      for (int round = 0; round < kRiseRounds && cavity.size() <= kRiseTets; ++round) {
         if (!blocking_faces(topo, sorted_copy(cavity), p, worst_quality(topo, cavity), -1, join, bad)) break;
         if (!bad) {
           if (try_cavity(topo, cavity, p, bar, scratch, rule, false, &growth)) return true;

@@ -40,9 +40,12 @@
 //     deepest point of its kernel, the cavity taking in the tets behind
 //     the faces that hold that point down, then, for a tet on the
 //     boundary, a point fixed at a regular tet's height above each of its
-//     boundary faces, the cavity taking in the tets behind the faces that
-//     point sees from behind or at a worse quality than the cavity's
-//     worst; free vertices the cavity swallows vanish (left unused, as
+//     boundary faces (for a tet under 1 degree with no boundary face: on
+//     either side of its largest face), the cavity taking in the tets
+//     behind the faces that point sees from behind or at a worse quality
+//     than the cavity's worst, for up to 48 rounds and 384 tets (a sheet
+//     of flat tets on a planar part of a thrice-refined surface needs
+//     that many); free vertices the cavity swallows vanish (left unused, as
 //     collapse.hpp leaves them). The fixed cavities of steps 1-4 stay thin
 //     on a flat patch of surface with flat tets stacked on it (helmet r1:
 //     0.028 -> 3.8 degrees, part r1 0.006 -> 1.19, elephant r1 11.7 ->
