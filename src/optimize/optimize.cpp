@@ -12,7 +12,8 @@
 //     are free).
 // After the passes, one sweep of multi-face removals (multi_face_pass),
 // rounds on the mesh's worst tet (worst_tet_rounds, with joint smoothing
-// of tied worst tets: joint_smoothing.hpp), then the relaxation
+// of tied worst tets: joint_smoothing.hpp; more rounds while the worst tet
+// is under 1 degree), then the relaxation
 // sweeps (relaxation_sweep, two by default). Each
 // change of the passes strictly raises the ascending sequence of tet
 // qualities in lexicographic order; with the caps this bounds the work.
