@@ -309,10 +309,30 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
   };
   const double flat = quality_of_angle(kFlatAngle);
   const int rounds = options.worst_tet_rounds > 0 ? options.worst_tet_rounds + options.flat_tet_rounds : 0;
+  // Past options.worst_tet_rounds only a tet under `flat` matters: the
+  // worst is sought among those (ascending slots, as the whole scan) and
+  // the tets changed since, not over the whole mesh every round (femur r3:
+  // 5.4 M tets, hundreds of rounds).
+  std::vector<uint32_t> flat_tets, changed_tets;
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
-    for (uint32_t t = 0; t < topo.slots(); ++t)
-      if (topo.alive(t) && (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst))) worst = t;
+    if (round < options.worst_tet_rounds) {
+      for (uint32_t t = 0; t < topo.slots(); ++t)
+        if (topo.alive(t) && (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst))) worst = t;
+    } else {
+      if (round == options.worst_tet_rounds) {
+        for (uint32_t t = 0; t < topo.slots(); ++t)
+          if (topo.alive(t) && topo.quality(t) < flat) flat_tets.push_back(t);
+        topo.log_changes(&changed_tets);
+      }
+      flat_tets.insert(flat_tets.end(), changed_tets.begin(), changed_tets.end());
+      changed_tets.clear();
+      std::sort(flat_tets.begin(), flat_tets.end());
+      flat_tets.erase(std::unique(flat_tets.begin(), flat_tets.end()), flat_tets.end());
+      std::erase_if(flat_tets, [&](uint32_t t) { return !topo.alive(t) || !(topo.quality(t) < flat); });
+      for (uint32_t t : flat_tets)
+        if (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst)) worst = t;
+    }
     if (worst == TetTopology::kNone || !(topo.quality(worst) < target)) break;
     if (round >= options.worst_tet_rounds && !(topo.quality(worst) < flat)) break;
     bool changed = false;
@@ -371,6 +391,7 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
     }
     if (!changed) break;
   }
+  topo.log_changes(nullptr);
   stats.vertices_removed += growth.vertices_removed;
 }
 

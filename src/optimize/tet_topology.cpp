@@ -178,6 +178,7 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
       free_slots_.pop_back();
     }
     created.push_back(t);
+    if (change_log_) change_log_->push_back(t);
     quality_[t] = std::numeric_limits<double>::quiet_NaN();
     std::copy_n(&new_tets[4 * i], 4, &mesh_.tets[4 * t]);
     for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
@@ -235,6 +236,7 @@ void TetTopology::move_vertex(uint32_t v, const double* x) {
   std::vector<uint32_t> star;
   vertex_star(v, star);
   for (uint32_t t : star) quality_[t] = std::numeric_limits<double>::quiet_NaN();
+  if (change_log_) change_log_->insert(change_log_->end(), star.begin(), star.end());
 }
 
 uint32_t TetTopology::next_stamp() const {

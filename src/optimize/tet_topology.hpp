@@ -109,6 +109,11 @@ class TetTopology {
     for (uint32_t t : slots) quads.insert(quads.end(), tet(t), tet(t) + 4);
   }
 
+  // While `log` is set (null: none), replace() appends the slots it fills
+  // and move_vertex() the slots of the moved vertex's star: every tet whose
+  // quality may have changed since, trials that were undone included.
+  void log_changes(std::vector<uint32_t>* log) { change_log_ = log; }
+
   // Writes the alive tets back to the mesh's tet array, in slot order.
   void compact();
 
@@ -124,6 +129,7 @@ class TetTopology {
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
   double measure(uint32_t t) const;
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
+  std::vector<uint32_t>* change_log_ = nullptr;  // see log_changes
   mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk or replace
   mutable uint32_t stamp_ = 0;
   mutable std::vector<uint32_t> vertex_mark_;  // per vertex: stamp of the last star_neighbours
