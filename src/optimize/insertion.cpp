@@ -323,14 +323,12 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
   // A flat tet off the boundary (its corners on one plane, as surface
   // vertices of a planar face can be after the removals) has no boundary
   // face to rise from: its largest face, on either side, takes that part.
+  bool off_boundary = true;
+  for (int f = 0; f < 4; ++f) off_boundary = off_boundary && topo.twin(4 * t + f) != TetTopology::kNone;
   int lifted_face = -1;
-  if (topo.quality(t) < quality_of_angle(kDegenerateAngle)) {
+  if (off_boundary && topo.quality(t) < quality_of_angle(kDegenerateAngle)) {
     double largest = 0;
     for (int f = 0; f < 4; ++f) {
-      if (topo.twin(4 * t + f) == TetTopology::kNone) {
-        lifted_face = -1;
-        break;
-      }
       const double area = face_frame(topo, t, f).twice_area;
       if (area > largest) {
         largest = area;
@@ -339,11 +337,12 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
     }
   }
   for (int f = 0; f < 4; ++f) {
+    const bool boundary = topo.twin(4 * t + f) == TetTopology::kNone;
+    if (!boundary && f != lifted_face) continue;
     double p[3];
-    const bool lifted = f == lifted_face;
+    // A boundary face rises on its tet's side only; the lifted face on both.
     for (double scale : {1.0, 0.5, -1.0, -0.5}) {
-      if (!lifted && scale < 0) break;
-      if ((!lifted && topo.twin(4 * t + f) != TetTopology::kNone) || !point_above_face(topo, t, f, scale, p)) break;
+      if ((boundary && scale < 0) || !point_above_face(topo, t, f, scale, p)) break;
       cavity = start;
       for (int round = 0; round < kRiseRounds && cavity.size() <= kRiseTets; ++round) {
         if (!blocking_faces(topo, sorted_copy(cavity), p, worst_quality(topo, cavity), -1, join, bad)) break;

@@ -314,11 +314,14 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
   // the tets changed since, not over the whole mesh every round (femur r3:
   // 5.4 M tets, hundreds of rounds).
   std::vector<uint32_t> flat_tets, changed_tets;
+  const auto worse = [&](uint32_t t, uint32_t than) {
+    return than == TetTopology::kNone || topo.quality(t) < topo.quality(than);
+  };
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     if (round < options.worst_tet_rounds) {
       for (uint32_t t = 0; t < topo.slots(); ++t)
-        if (topo.alive(t) && (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst))) worst = t;
+        if (topo.alive(t) && worse(t, worst)) worst = t;
     } else {
       if (round == options.worst_tet_rounds) {
         for (uint32_t t = 0; t < topo.slots(); ++t)
@@ -331,10 +334,9 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
       flat_tets.erase(std::unique(flat_tets.begin(), flat_tets.end()), flat_tets.end());
       std::erase_if(flat_tets, [&](uint32_t t) { return !topo.alive(t) || !(topo.quality(t) < flat); });
       for (uint32_t t : flat_tets)
-        if (worst == TetTopology::kNone || topo.quality(t) < topo.quality(worst)) worst = t;
+        if (worse(t, worst)) worst = t;
     }
     if (worst == TetTopology::kNone || !(topo.quality(worst) < target)) break;
-    if (round >= options.worst_tet_rounds && !(topo.quality(worst) < flat)) break;
     bool changed = false;
     Flip flip;
     if (best_flip(topo, worst, flip)) {

@@ -57,8 +57,9 @@ struct OptimizeOptions {
   // while it is below the target and something changes); 0 for none.
   int worst_tet_rounds = 64;
   // Then (unless worst_tet_rounds is 0), while the worst tet has an angle
-  // under 1 degree, up to this many rounds more: each may lift one tet of a sheet of flat tets (joint r3:
-  // 89 tets under 1e-6 degrees; 64 rounds left it at 9e-7 degrees).
+  // under 1 degree, up to this many rounds more: each may lift one tet of
+  // a sheet of flat tets (joint r3: 89 tets under 1e-6 degrees; 64 rounds
+  // left it at 9e-7 degrees).
   int flat_tet_rounds = 1024;
 };
 
