@@ -35,6 +35,7 @@
 #include "parallel/collective_step.hpp"
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
+#include "pipeline/cone_alternative.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
@@ -643,6 +644,16 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["measure s"] = n.measure_seconds;
           c["tets"] = s.mesh.num_tets();
           return c;
+        });
+      }
+      if (options.optimize_passes > 0 &&
+          comm.max(static_cast<int64_t>(root_rank && s.mesh.num_triangles() <= kConeTriangles)) > 0) {
+        report.run_step("cone alternative", [&] {
+          if (!root_rank) return ojson::object();
+          OptimizeOptions o;
+          o.passes = options.optimize_passes;
+          o.quality_target_deg = options.quality_target;
+          return try_cone_alternative(s.mesh, o);
         });
       }
       report.run_step("write mesh", [&] {

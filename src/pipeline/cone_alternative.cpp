@@ -1,0 +1,85 @@
+// The cone alternative (see cone_alternative.hpp).
+#include "pipeline/cone_alternative.hpp"
+
+#include <utility>
+#include <vector>
+
+#include "check/quality.hpp"
+#include "core/compact_mesh.hpp"
+#include "core/kernel_point.hpp"
+#include "core/predicates.hpp"
+
+namespace partet {
+namespace {
+
+// Share of tets under 10 degrees, as the fraction under / tets.
+bool share_no_higher(const QualityStats& x, const QualityStats& y) {
+  return x.dihedral_under_10 * y.tets <= y.dihedral_under_10 * x.tets;
+}
+
+// x is at least as good as y in all three measures and better in one.
+bool better(const QualityStats& x, const QualityStats& y) {
+  if (x.tets == 0 || y.tets == 0) return false;
+  const bool no_worse = x.min_dihedral_deg >= y.min_dihedral_deg && share_no_higher(x, y) &&
+                        x.radius_ratio_mean >= y.radius_ratio_mean;
+  const bool gains = x.min_dihedral_deg > y.min_dihedral_deg || !share_no_higher(y, x) ||
+                     x.radius_ratio_mean > y.radius_ratio_mean;
+  return no_worse && gains;
+}
+
+}  // namespace
+
+bool cone_mesh(const TetMesh& mesh, TetMesh& cone) {
+  const size_t n = mesh.num_triangles();
+  if (n == 0) return false;
+  // The kernel's side of a triangle is where orient3d(a, b, c, q) > 0: the
+  // outward triangles go in reversed.
+  std::vector<double> triangles;
+  triangles.reserve(9 * n);
+  for (size_t t = 0; t < n; ++t)
+    for (int k : {0, 2, 1}) {
+      const double* p = mesh.point(mesh.tris[3 * t + k]);
+      triangles.insert(triangles.end(), p, p + 3);
+    }
+  const KernelPoint kernel = deepest_kernel_point(triangles);
+  if (!kernel.found || !(kernel.depth > 0)) return false;
+  for (size_t t = 0; t < n; ++t) {
+    const uint32_t* v = &mesh.tris[3 * t];
+    if (orient3d(mesh.point(v[0]), mesh.point(v[2]), mesh.point(v[1]), kernel.point) <= 0) return false;
+  }
+  cone = TetMesh{};
+  cone.xyz = mesh.xyz;
+  cone.xyz.insert(cone.xyz.end(), kernel.point, kernel.point + 3);
+  const auto apex = static_cast<uint32_t>(mesh.num_vertices());
+  cone.tets.reserve(4 * n);
+  for (size_t t = 0; t < n; ++t) {
+    const uint32_t* v = &mesh.tris[3 * t];
+    cone.tets.insert(cone.tets.end(), {v[0], v[2], v[1], apex});
+  }
+  cone.tris = mesh.tris;
+  drop_unused_vertices(cone);
+  return true;
+}
+
+nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const OptimizeOptions& options) {
+  nlohmann::ordered_json c;
+  TetMesh cone;
+  if (mesh.num_triangles() > kConeTriangles || !cone_mesh(mesh, cone)) {
+    c["star-shaped"] = false;
+    return c;
+  }
+  const OptimizeStats stats = optimize_mesh(cone, options);
+  if (stats.vertices_collapsed + stats.vertices_removed > 0) drop_unused_vertices(cone);
+  const QualityStats& q = stats.after;
+  const bool kept = better(q, measure_quality(mesh));
+  c["star-shaped"] = true;
+  c["tets"] = cone.num_tets();
+  c["min dihedral"] = q.min_dihedral_deg;
+  c["% under 10 deg"] = 100.0 * static_cast<double>(q.dihedral_under_10) / static_cast<double>(q.tets);
+  c["mean radius ratio"] = q.radius_ratio_mean;
+  c["kept"] = kept;
+  if (kept) mesh = std::move(cone);
+  return c;
+}
+
+}  // namespace partet
