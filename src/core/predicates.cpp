@@ -197,11 +197,25 @@ int orient3d_small_integers(const double* const* p, int low) {
   return (det > 0) - (det < 0);
 }
 
+// The first N coordinates of p and q are equal.
+template <int N>
+bool same_point(const double* p, const double* q) {
+  for (int k = 0; k < N; ++k)
+    if (p[k] != q[k]) return false;
+  return true;
+}
+
 }  // namespace
 
 namespace detail {
 
 int orient2d_exact(const double* a, const double* b, const double* c) {
+  // Three points with a coordinate in common lie on that axis-parallel
+  // line, and two equal points on every line: zero without arithmetic (the
+  // filter cannot certify a zero).
+  for (int k = 0; k < 2; ++k)
+    if (a[k] == b[k] && a[k] == c[k]) return 0;
+  if (same_point<2>(a, b) || same_point<2>(a, c) || same_point<2>(b, c)) return 0;
   const double* p[3] = {a, b, c};
   const ExponentRange range = exponent_range(p, 3, 2);
   if (range.high == INT_MIN) return 0;
@@ -221,6 +235,15 @@ int orient2d_exact(const double* a, const double* b, const double* c) {
 }
 
 int orient3d_exact(const double* a, const double* b, const double* c, const double* d) {
+  // Four points with a coordinate in common lie in that coordinate plane
+  // (common: the templated core's faces and vertices, leaf corners), and a
+  // point repeated leaves three: zero without arithmetic (the filter cannot
+  // certify a zero).
+  for (int k = 0; k < 3; ++k)
+    if (a[k] == b[k] && a[k] == c[k] && a[k] == d[k]) return 0;
+  if (same_point<3>(a, b) || same_point<3>(a, c) || same_point<3>(a, d) || same_point<3>(b, c) ||
+      same_point<3>(b, d) || same_point<3>(c, d))
+    return 0;
   const double* p[4] = {a, b, c, d};
   const ExponentRange range = exponent_range(p, 4, 3);
   if (range.high == INT_MIN) return 0;

@@ -307,6 +307,40 @@ TEST(Predicates, Orient3dRandomNearCoplanar) {
   EXPECT_GT(zeros, 0);
 }
 
+// The exact paths' shortcuts (points sharing one coordinate, repeated
+// points) give zero only where the reference does: near-degenerate sets
+// that share a coordinate in all but one point, or repeat a point in all
+// but one coordinate, keep their signs.
+TEST(Predicates, ExactShortcutsOnSharedCoordinatesAndRepeatedPoints) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> pick(0, 3), axis(0, 2), nudge(-1, 1);
+  int zeros = 0, signs = 0;
+  for (int n = 0; n < 20000; ++n) {
+    double p[4][3];
+    for (auto& q : p)
+      for (double& x : q) x = 1e3 * u(rng);
+    const int k = axis(rng);
+    if (n % 2 == 0) {
+      // One coordinate shared, but by some points nudged an ulp off.
+      for (auto& q : p) q[k] = p[0][k];
+      for (int i = 1; i < 4; ++i) p[i][k] = ulps(p[i][k], nudge(rng) * (pick(rng) == 0));
+    } else {
+      // A point repeated, but for some coordinates nudged an ulp off.
+      const int i = pick(rng), j = (i + 1 + pick(rng) % 3) % 4;
+      for (int c = 0; c < 3; ++c) p[j][c] = ulps(p[i][c], c == k ? nudge(rng) : 0);
+    }
+    const int expected = ref_orient3d(p[0], p[1], p[2], p[3]);
+    zeros += expected == 0;
+    signs += expected != 0;
+    ASSERT_EQ(detail::orient3d_exact(p[0], p[1], p[2], p[3]), expected) << n;
+    const double a[2] = {p[0][0], p[0][1]}, b[2] = {p[1][0], p[1][1]}, c[2] = {p[2][0], p[2][1]};
+    ASSERT_EQ(detail::orient2d_exact(a, b, c), ref_orient2d(a, b, c)) << n;
+  }
+  EXPECT_GT(zeros, 1000);
+  EXPECT_GT(signs, 1000);
+}
+
 TEST(Predicates, PlaneSideMatchesOrient3d) {
   // One plane against many points: near-coplanar ones (ulps off the plane,
   // large offsets, small and large scales), points exactly on it, and far
