@@ -13,8 +13,8 @@
 // After the passes, one sweep of multi-face removals (multi_face_pass),
 // rounds on the mesh's worst tet (worst_tet_rounds, with joint smoothing
 // of tied worst tets: joint_smoothing.hpp; more rounds while the worst tet
-// is under 1 degree), then the relaxation
-// sweeps (relaxation_sweep, two by default). Each
+// is under 1 degree), a sweep of needle splits (needle_split.hpp), then the
+// relaxation sweeps (relaxation_sweep, two by default). Each
 // change of the passes strictly raises the ascending sequence of tet
 // qualities in lexicographic order; with the caps this bounds the work.
 #include "optimize/optimize.hpp"
@@ -30,6 +30,7 @@
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/joint_smoothing.hpp"
+#include "optimize/needle_split.hpp"
 #include "optimize/sheet_lift.hpp"
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_quality.hpp"
@@ -444,6 +445,8 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     }
     part = Stopwatch();
     worst_tet_rounds(topo, target, options, fixed, stats, scratch);
+    if (options.needle_radius_ratio > 0 && options.insert_vertices)
+      stats.needles_split += split_needles(topo, options.needle_radius_ratio, scratch);
     stats.insertion_seconds += part.wall();
     part = Stopwatch();
     std::vector<uint8_t> settled;

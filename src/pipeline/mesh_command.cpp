@@ -636,6 +636,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           c["vertices moved"] = n.vertices_moved;
           c["vertices relaxed"] = n.vertices_relaxed;
           c["sheets lifted"] = n.sheets_lifted;
+          c["needles split"] = n.needles_split;
           c["passes"] = n.passes;
           c["topology s"] = n.topology_seconds;
           c["insertion s"] = n.insertion_seconds;

@@ -1,0 +1,108 @@
+// split_needles (see needle_split.hpp).
+#include "optimize/needle_split.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "check/quality.hpp"
+#include "core/predicates.hpp"
+#include "optimize/insertion.hpp"
+
+namespace partet {
+namespace {
+
+constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+double radius_ratio_of(const TetTopology& topo, const uint32_t* v) {
+  return tet_radius_ratio(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
+}
+
+double squared_length(const double* p, const double* q) {
+  return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+}
+
+// Scratch of one sweep.
+struct Split {
+  std::vector<uint32_t> cavity, old_tets, new_tets, created, restored, incident, quads;
+};
+
+// Splits the edge of closed ring `ring` at its midpoint if that pays (see
+// needle_split.hpp); true when kept.
+bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, SmoothingScratch& scratch, Split& s) {
+  const double* a = topo.point(ring.a);
+  const double* b = topo.point(ring.b);
+  const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+  s.cavity.assign(ring.tets, ring.tets + ring.n);
+  s.old_tets.clear();
+  s.new_tets.clear();
+  double old_sum = 0;
+  for (uint32_t c : s.cavity) {
+    s.old_tets.insert(s.old_tets.end(), topo.tet(c), topo.tet(c) + 4);
+    old_sum += radius_ratio_of(topo, topo.tet(c));
+  }
+  const uint32_t m = topo.add_vertex(middle, kOptimizerVertexId | topo.num_vertices());
+  for (uint32_t c : s.cavity)
+    for (uint32_t end : {ring.a, ring.b}) {
+      uint32_t tet[4];
+      std::copy_n(topo.tet(c), 4, tet);
+      tet[local_index(tet, end)] = m;
+      if (orient3d(topo.point(tet[0]), topo.point(tet[1]), topo.point(tet[2]), topo.point(tet[3])) <= 0) {
+        topo.remove_last_vertex();
+        return false;
+      }
+      s.new_tets.insert(s.new_tets.end(), tet, tet + 4);
+    }
+  const AngleSummary before = summarize_angles(topo, s.old_tets);
+  topo.incident_tets(s.old_tets, s.incident);
+  s.created.clear();
+  topo.replace(s.cavity, s.new_tets, s.created);
+  smooth_vertex(topo, m, scratch);
+  topo.tet_vertices(s.created, s.quads);
+  double new_sum = 0;
+  for (size_t i = 0; i < s.quads.size(); i += 4) new_sum += radius_ratio_of(topo, &s.quads[i]);
+  const double added = static_cast<double>(s.created.size() - s.cavity.size());
+  if (summarize_angles(topo, s.quads).no_worse_than(before) && new_sum - old_sum >= mean * added) return true;
+  s.restored.clear();
+  topo.replace(s.created, s.old_tets, s.restored);
+  topo.restore_incident(s.old_tets, s.incident, s.cavity, s.restored);
+  topo.remove_last_vertex();
+  return false;
+}
+
+}  // namespace
+
+size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
+  std::vector<std::pair<double, uint32_t>> needles;
+  double sum = 0;
+  size_t tets = 0;
+  for (uint32_t t = 0; t < topo.slots(); ++t) {
+    if (!topo.alive(t)) continue;
+    const double r = radius_ratio_of(topo, topo.tet(t));
+    sum += r;
+    ++tets;
+    if (r < bar) needles.emplace_back(r, t);
+  }
+  if (needles.empty()) return 0;
+  const double mean = sum / static_cast<double>(tets);
+  std::sort(needles.begin(), needles.end());
+  Split s;
+  size_t split = 0;
+  for (const auto& [ratio, t] : needles) {
+    // A slot may have been refilled by a split since the list was made.
+    if (!topo.alive(t) || radius_ratio_of(topo, topo.tet(t)) >= bar) continue;
+    const uint32_t* v = topo.tet(t);
+    int longest = 0;
+    double length = -1;
+    for (int e = 0; e < 6; ++e) {
+      const double l = squared_length(topo.point(v[kEdges[e][0]]), topo.point(v[kEdges[e][1]]));
+      if (l > length) length = l, longest = e;
+    }
+    TetTopology::Ring ring;
+    if (!topo.edge_ring(t, kEdges[longest][0], kEdges[longest][1], ring)) continue;
+    split += try_split(topo, ring, mean, scratch, s);
+  }
+  return split;
+}
+
+}  // namespace partet
