@@ -11,8 +11,10 @@
 // kept when the ring's smallest dihedral angle does not drop, no more of
 // its tets are under 10 degrees, and the radius ratios gain at least the
 // mesh's mean per tet added (so the mean rises); else the ring is put back
-// as it was. Deterministic; the boundary and the frozen vertices are
-// untouched (m is new and free).
+// as it was. Up to four rounds: after the first, over the needles the
+// previous round's splits made (the refused rings are unchanged, so trying
+// them again would be refused again). Deterministic; the boundary and the
+// frozen vertices are untouched (m is new and free).
 #pragma once
 
 #include <cstddef>
@@ -22,8 +24,8 @@
 
 namespace partet {
 
-// One sweep over the tets under radius ratio `bar` at its start; the number
-// of edges split.
+// One sweep over the tets under radius ratio `bar` at its start (and the
+// rounds after it); the number of edges split.
 size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch);
 
 }  // namespace partet

@@ -421,8 +421,8 @@ TEST(OptimizeMesh, SmoothingAroundAStuckWorstTetLiftsTheSmallestAngle) {
 // Needle splits (needle_split.hpp) on CAD parts whose needle surface
 // triangles leave needles inside: with the relaxation off, so that both
 // runs reach the sweep with the same mesh, the splits raise the mean radius
-// ratio (lever 0.221 -> 0.233 with 43 splits, part 0.299 -> 0.316 with 49,
-// at the time of writing) and
+// ratio (lever 0.221 -> 0.254 with 141 splits, part 0.299 -> 0.344 with
+// 133, at the time of writing) and
 // lower neither the smallest angle nor raise the count under 10 degrees.
 TEST(OptimizeMesh, NeedleSplitsRaiseTheRadiusRatioAndCostNoAngle) {
   OptimizeOptions base;
@@ -431,7 +431,7 @@ TEST(OptimizeMesh, NeedleSplitsRaiseTheRadiusRatioAndCostNoAngle) {
     const Comparison c = compare_options(name, [](OptimizeOptions& o) { o.needle_radius_ratio = 0; }, base);
     EXPECT_GT(c.on.needles_split, 0u) << name;
     EXPECT_EQ(c.off.needles_split, 0u) << name;
-    EXPECT_GT(c.on.after.radius_ratio_mean, c.off.after.radius_ratio_mean + 0.008) << name;
+    EXPECT_GT(c.on.after.radius_ratio_mean, c.off.after.radius_ratio_mean + 0.02) << name;
     EXPECT_GE(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg) << name;
     EXPECT_LE(c.on.after.dihedral_under_10, c.off.after.dihedral_under_10) << name;
     EXPECT_GT(c.on.after.tets, c.off.after.tets) << name;
