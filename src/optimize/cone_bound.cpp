@@ -14,7 +14,6 @@
 namespace partet {
 namespace {
 
-constexpr int kEdgePairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 // The other two corners of each edge: the faces at the edge are those
 // opposite them.
 constexpr int kEdgeFaces[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
@@ -70,7 +69,7 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
       outer[f] = other == TetTopology::kNone || !std::binary_search(members.begin(), members.end(), other / 4);
     }
     for (uint8_t e = 0; e < 6; ++e) {
-      const uint32_t x = v[kEdgePairs[e][0]], y = v[kEdgePairs[e][1]];
+      const uint32_t x = v[kTetEdges[e][0]], y = v[kTetEdges[e][1]];
       const uint64_t key = (uint64_t{std::min(x, y)} << 32) | std::max(x, y);
       const int outer_faces = int{outer[kEdgeFaces[e][0]]} + int{outer[kEdgeFaces[e][1]]};
       out.incidences.push_back({key, i, e, static_cast<uint8_t>(outer_faces)});

@@ -139,9 +139,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
       return false;
     }
   }
-  topo.incident_tets(old_tets, incident);
-  topo.replace(cavity, new_tets, created);
-  smooth_vertex(topo, v, scratch);
+  apply_cone(topo, cavity, old_tets, new_tets, scratch, created, incident);
   double new_quality = std::numeric_limits<double>::infinity();
   for (uint32_t t : created) {
     const double q = topo.quality(t);
@@ -163,10 +161,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
     if (growth) growth->vertices_removed += sorted_copy(vanished).size();
     return true;
   }
-  std::vector<uint32_t> restored;
-  topo.replace(created, old_tets, restored);
-  topo.restore_incident(old_tets, incident, cavity, restored);
-  topo.remove_last_vertex();
+  undo_cone(topo, cavity, old_tets, created, incident);
   return false;
 }
 
@@ -374,6 +369,23 @@ AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t>
 bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_tets,
                         std::span<const uint32_t> new_tets) {
   return summarize_angles(topo, new_tets).no_worse_than(summarize_angles(topo, old_tets));
+}
+
+void apply_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
+                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, std::vector<uint32_t>& created,
+                std::vector<uint32_t>& incident) {
+  topo.incident_tets(old_tets, incident);
+  created.clear();
+  topo.replace(cavity, new_tets, created);
+  smooth_vertex(topo, static_cast<uint32_t>(topo.num_vertices() - 1), scratch);
+}
+
+void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
+               const std::vector<uint32_t>& created, const std::vector<uint32_t>& incident) {
+  std::vector<uint32_t> restored;
+  topo.replace(created, old_tets, restored);
+  topo.restore_incident(old_tets, incident, cavity, restored);
+  topo.remove_last_vertex();
 }
 
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }

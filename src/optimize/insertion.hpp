@@ -134,6 +134,18 @@ struct CavityGrowth {
   size_t vertices_removed = 0;
 };
 
+// A trial vertex v, the mesh's last vertex (added by the caller, no tet has
+// it yet): apply_cone replaces `cavity`'s tets (vertex quadruples
+// `old_tets`) by `new_tets`, which join its outer faces to v, and smooths v;
+// the new slots go to `created`, the incident tets to put back to
+// `incident`. undo_cone puts the cavity back as it was, leaving no trace
+// (tet_topology.hpp, restore_incident), and drops v.
+void apply_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
+                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, std::vector<uint32_t>& created,
+                std::vector<uint32_t>& incident);
+void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
+               const std::vector<uint32_t>& created, const std::vector<uint32_t>& incident);
+
 // `growth` enables step 6.
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch,
                    InsertionRule rule = InsertionRule::kShortfall, CavityGrowth* growth = nullptr);

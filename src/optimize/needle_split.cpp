@@ -5,14 +5,12 @@
 #include <utility>
 #include <vector>
 
-#include "check/quality.hpp"
 #include "core/predicates.hpp"
 #include "optimize/insertion.hpp"
 
 namespace partet {
 namespace {
 
-constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 // Rounds of a sweep: the first over every needle, each later one over the
 // needles the previous round's splits made (a split halves the longest
 // edge; a needle of edge ratio 6 wants two or three). One round: r1 mean
@@ -20,17 +18,13 @@ constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 // 0.430) for 2 % more CPU than one.
 constexpr int kNeedleRounds = 4;
 
-double radius_ratio_of(const TetTopology& topo, const uint32_t* v) {
-  return tet_radius_ratio(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
-}
-
 double squared_length(const double* p, const double* q) {
   return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
 }
 
 // Scratch of one sweep.
 struct Split {
-  std::vector<uint32_t> cavity, old_tets, new_tets, created, restored, incident, quads;
+  std::vector<uint32_t> cavity, old_tets, new_tets, created, incident, quads;
 };
 
 // Splits the edge of closed ring `ring` at its midpoint if that pays (see
@@ -60,19 +54,13 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
       s.new_tets.insert(s.new_tets.end(), tet, tet + 4);
     }
   const AngleSummary before = summarize_angles(topo, s.old_tets);
-  topo.incident_tets(s.old_tets, s.incident);
-  s.created.clear();
-  topo.replace(s.cavity, s.new_tets, s.created);
-  smooth_vertex(topo, m, scratch);
+  apply_cone(topo, s.cavity, s.old_tets, s.new_tets, scratch, s.created, s.incident);
   topo.tet_vertices(s.created, s.quads);
   double new_sum = 0;
   for (size_t i = 0; i < s.quads.size(); i += 4) new_sum += radius_ratio_of(topo, &s.quads[i]);
   const double added = static_cast<double>(s.created.size() - s.cavity.size());
   if (summarize_angles(topo, s.quads).no_worse_than(before) && new_sum - old_sum >= mean * added) return true;
-  s.restored.clear();
-  topo.replace(s.created, s.old_tets, s.restored);
-  topo.restore_incident(s.old_tets, s.incident, s.cavity, s.restored);
-  topo.remove_last_vertex();
+  undo_cone(topo, s.cavity, s.old_tets, s.created, s.incident);
   return false;
 }
 
@@ -104,11 +92,11 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
       int longest = 0;
       double length = -1;
       for (int e = 0; e < 6; ++e) {
-        const double l = squared_length(topo.point(v[kEdges[e][0]]), topo.point(v[kEdges[e][1]]));
+        const double l = squared_length(topo.point(v[kTetEdges[e][0]]), topo.point(v[kTetEdges[e][1]]));
         if (l > length) length = l, longest = e;
       }
       TetTopology::Ring ring;
-      if (!topo.edge_ring(t, kEdges[longest][0], kEdges[longest][1], ring)) continue;
+      if (!topo.edge_ring(t, kTetEdges[longest][0], kTetEdges[longest][1], ring)) continue;
       if (!try_split(topo, ring, mean, scratch, s)) continue;
       ++split;
       made.insert(made.end(), s.created.begin(), s.created.end());

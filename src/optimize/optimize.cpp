@@ -39,8 +39,6 @@
 namespace partet {
 namespace {
 
-// Local vertex pairs of the six edges of a tet.
-constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 // Work list entries per tet below the target at the start of a pass.
 constexpr size_t kWorkPerBadTet = 4;
 // Smoothing works on the tets under this angle (or the target if lower):
@@ -85,7 +83,7 @@ bool best_flip(const TetTopology& topo, uint32_t t, Flip& best) {
   };
   // Each search looks only for flips beating the best one so far.
   double beat = -std::numeric_limits<double>::infinity();
-  for (const auto& e : kEdges) {
+  for (const auto& e : kTetEdges) {
     consider(edge_removal(topo, t, e[0], e[1], candidate, &beat));
     if (found) beat = best.new_quality;
   }
@@ -121,10 +119,6 @@ size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats) {
       if (topo.quality(c) < target) work.push_back(c);
   }
   return applied;
-}
-
-double radius_ratio_of(const TetTopology& topo, const uint32_t* v) {
-  return tet_radius_ratio(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
 }
 
 // After the passes: each tet still below the target, worst first, is

@@ -22,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "check/quality.hpp"
 #include "core/tet_mesh.hpp"
 
 namespace partet {
@@ -150,6 +151,14 @@ class TetTopology {
   FaceMatch* find_match(const FaceKey& key);
   std::vector<FaceMatch> matches_;
 };
+
+// Local vertex pairs of the six edges of a tet.
+inline constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+// tet_radius_ratio of the tet with vertex quadruple v (slots or not).
+inline double radius_ratio_of(const TetTopology& topo, const uint32_t* v) {
+  return tet_radius_ratio(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
+}
 
 // Local index of vertex v in tet t (0..3), or -1.
 inline int local_index(const uint32_t* tet, uint32_t v) {

@@ -4,7 +4,6 @@
 #include <utility>
 #include <vector>
 
-#include "check/quality.hpp"
 #include "core/compact_mesh.hpp"
 #include "core/kernel_point.hpp"
 #include "core/predicates.hpp"
@@ -61,7 +60,8 @@ bool cone_mesh(const TetMesh& mesh, TetMesh& cone) {
   return true;
 }
 
-nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const OptimizeOptions& options) {
+nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& quality,
+                                            const OptimizeOptions& options) {
   nlohmann::ordered_json c;
   TetMesh cone;
   if (mesh.num_triangles() > kConeTriangles || !cone_mesh(mesh, cone)) {
@@ -71,7 +71,7 @@ nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const OptimizeOptions
   const OptimizeStats stats = optimize_mesh(cone, options);
   if (stats.vertices_collapsed + stats.vertices_removed > 0) drop_unused_vertices(cone);
   const QualityStats& q = stats.after;
-  const bool kept = better(q, measure_quality(mesh));
+  const bool kept = better(q, quality);
   c["star-shaped"] = true;
   c["tets"] = cone.num_tets();
   c["min dihedral"] = q.min_dihedral_deg;

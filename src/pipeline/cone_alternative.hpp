@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <nlohmann/json.hpp>
 
+#include "check/quality.hpp"
 #include "core/tet_mesh.hpp"
 #include "optimize/optimize.hpp"
 
@@ -33,10 +34,12 @@ constexpr size_t kConeTriangles = 1000;
 bool cone_mesh(const TetMesh& mesh, TetMesh& cone);
 
 // When mesh.tris has at most kConeTriangles triangles and a cone: the cone,
-// optimized with `options`, replaces `mesh` when it is at least as good in
-// smallest dihedral angle, share of tets under 10 degrees and mean radius
-// ratio, and better in one (the three measures the optimizer serves).
-// Returns what was tried, for the run report.
-nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const OptimizeOptions& options);
+// optimized with `options`, replaces `mesh` (whose quality is `quality`, as
+// optimize_mesh measured it) when it is at least as good in smallest
+// dihedral angle, share of tets under 10 degrees and mean radius ratio, and
+// better in one (the three measures the optimizer serves). Returns what was
+// tried, for the run report.
+nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& quality,
+                                            const OptimizeOptions& options);
 
 }  // namespace partet

@@ -374,6 +374,14 @@ ojson refine_thin_core(MeshState& s, const MeshOptions& o, const Comm& comm) {
   return c;
 }
 
+// The optimizer's options from the command line's.
+OptimizeOptions optimize_options(const MeshOptions& o) {
+  OptimizeOptions out;
+  out.passes = o.optimize_passes;
+  out.quality_target_deg = o.quality_target;
+  return out;
+}
+
 // Thrown on every rank when the front did not close on a tree that
 // refine_thin_core refined: run_mesh meshes again without the refinement.
 struct ThinCoreRetry {};
@@ -609,13 +617,12 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       memo = RemovalMemo{};
       left = SurfaceMesh{};
       release_build_state(s);
+      QualityStats optimized;  // the front's mesh after the optimizer (rank 0)
       if (options.optimize_passes > 0) {
         report.run_step("optimize", [&] {
           if (!root_rank) return ojson::object();
-          OptimizeOptions o;
-          o.passes = options.optimize_passes;
-          o.quality_target_deg = options.quality_target;
-          OptimizeStats n = optimize_mesh(s.mesh, o);
+          OptimizeStats n = optimize_mesh(s.mesh, optimize_options(options));
+          optimized = n.after;
           if (n.vertices_collapsed + n.vertices_removed > 0) drop_unused_vertices(s.mesh);
           ojson c;
           for (const auto& [when, q] : {std::pair{"before", n.before}, std::pair{"after", n.after}}) {
@@ -651,10 +658,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
           comm.max(static_cast<int64_t>(root_rank && s.mesh.num_triangles() <= kConeTriangles)) > 0) {
         report.run_step("cone alternative", [&] {
           if (!root_rank) return ojson::object();
-          OptimizeOptions o;
-          o.passes = options.optimize_passes;
-          o.quality_target_deg = options.quality_target;
-          return try_cone_alternative(s.mesh, o);
+          return try_cone_alternative(s.mesh, optimized, optimize_options(options));
         });
       }
       report.run_step("write mesh", [&] {

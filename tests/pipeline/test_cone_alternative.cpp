@@ -50,7 +50,7 @@ TEST(ConeAlternative, KeptOnlyWhenNoWorseInAnyMeasure) {
   TetMesh mesh = test::cube_tets();
   const TetMesh before = mesh;
   OptimizeOptions options;
-  nlohmann::ordered_json c = try_cone_alternative(mesh, options);
+  nlohmann::ordered_json c = try_cone_alternative(mesh, measure_quality(mesh), options);
   EXPECT_TRUE(c["star-shaped"].get<bool>());
   EXPECT_FALSE(c["kept"].get<bool>());
   EXPECT_DOUBLE_EQ(c["min dihedral"].get<double>(), 45.0);
