@@ -1,7 +1,7 @@
 // insert_vertex (see insertion.hpp). A trial is applied for real (replace)
 // so that smoothing sees the new star, and undone by the reverse replace,
 // which leaves no trace (the vertices' incident tets, where star walks
-// start, restored).
+// start, and their change marks restored).
 #include "optimize/insertion.hpp"
 
 #include <algorithm>
@@ -94,7 +94,9 @@ double worst_quality(const TetTopology& topo, const std::vector<uint32_t>& cavit
 bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
                 SmoothingScratch& scratch, InsertionRule rule, bool settled = false,
                 CavityGrowth* growth = nullptr) {
-  std::vector<uint32_t> old_tets, new_tets, created, incident;
+  std::vector<uint32_t> old_tets, new_tets;
+  ConeTrial trial;
+  const std::vector<uint32_t>& created = trial.created;
   const std::vector<uint32_t> members = sorted_copy(cavity);
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
@@ -139,7 +141,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
       return false;
     }
   }
-  apply_cone(topo, cavity, old_tets, new_tets, scratch, created, incident);
+  apply_cone(topo, cavity, old_tets, new_tets, scratch, trial);
   double new_quality = std::numeric_limits<double>::infinity();
   for (uint32_t t : created) {
     const double q = topo.quality(t);
@@ -161,7 +163,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
     if (growth) growth->vertices_removed += sorted_copy(vanished).size();
     return true;
   }
-  undo_cone(topo, cavity, old_tets, created, incident);
+  undo_cone(topo, cavity, old_tets, trial);
   return false;
 }
 
@@ -372,19 +374,20 @@ bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_t
 }
 
 void apply_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, std::vector<uint32_t>& created,
-                std::vector<uint32_t>& incident) {
-  topo.incident_tets(old_tets, incident);
-  created.clear();
-  topo.replace(cavity, new_tets, created);
+                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, ConeTrial& trial) {
+  topo.incident_tets(old_tets, trial.incident);
+  topo.save_marks(old_tets, trial.marks);
+  trial.created.clear();
+  topo.replace(cavity, new_tets, trial.created);
   smooth_vertex(topo, static_cast<uint32_t>(topo.num_vertices() - 1), scratch);
 }
 
 void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-               const std::vector<uint32_t>& created, const std::vector<uint32_t>& incident) {
+               const ConeTrial& trial) {
   std::vector<uint32_t> restored;
-  topo.replace(created, old_tets, restored);
-  topo.restore_incident(old_tets, incident, cavity, restored);
+  topo.replace(trial.created, old_tets, restored);
+  topo.restore_incident(old_tets, trial.incident, cavity, restored);
+  topo.restore_marks(old_tets, trial.marks);
   topo.remove_last_vertex();
 }
 

@@ -134,17 +134,22 @@ struct CavityGrowth {
   size_t vertices_removed = 0;
 };
 
+// What a cone trial must put back: the new slots (`created`), and the
+// incident tets and change marks of the cavity's vertices before it.
+struct ConeTrial {
+  std::vector<uint32_t> created, incident, marks;
+};
+
 // A trial vertex v, the mesh's last vertex (added by the caller, no tet has
 // it yet): apply_cone replaces `cavity`'s tets (vertex quadruples
-// `old_tets`) by `new_tets`, which join its outer faces to v, and smooths v;
-// the new slots go to `created`, the incident tets to put back to
-// `incident`. undo_cone puts the cavity back as it was, leaving no trace
-// (tet_topology.hpp, restore_incident), and drops v.
+// `old_tets`) by `new_tets`, which join its outer faces to v, and smooths v.
+// undo_cone puts the cavity back as it was, leaving no trace (incident
+// tets: tet_topology.hpp, restore_incident; change marks: save_marks), and
+// drops v.
 void apply_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, std::vector<uint32_t>& created,
-                std::vector<uint32_t>& incident);
+                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, ConeTrial& trial);
 void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-               const std::vector<uint32_t>& created, const std::vector<uint32_t>& incident);
+               const ConeTrial& trial);
 
 // `growth` enables step 6.
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch,

@@ -24,7 +24,8 @@ double squared_length(const double* p, const double* q) {
 
 // Scratch of one sweep.
 struct Split {
-  std::vector<uint32_t> cavity, old_tets, new_tets, created, incident, quads;
+  std::vector<uint32_t> cavity, old_tets, new_tets, quads;
+  ConeTrial trial;
 };
 
 // Splits the edge of closed ring `ring` at its midpoint if that pays (see
@@ -54,13 +55,13 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
       s.new_tets.insert(s.new_tets.end(), tet, tet + 4);
     }
   const AngleSummary before = summarize_angles(topo, s.old_tets);
-  apply_cone(topo, s.cavity, s.old_tets, s.new_tets, scratch, s.created, s.incident);
-  topo.tet_vertices(s.created, s.quads);
+  apply_cone(topo, s.cavity, s.old_tets, s.new_tets, scratch, s.trial);
+  topo.tet_vertices(s.trial.created, s.quads);
   double new_sum = 0;
   for (size_t i = 0; i < s.quads.size(); i += 4) new_sum += radius_ratio_of(topo, &s.quads[i]);
-  const double added = static_cast<double>(s.created.size() - s.cavity.size());
+  const double added = static_cast<double>(s.trial.created.size() - s.cavity.size());
   if (summarize_angles(topo, s.quads).no_worse_than(before) && new_sum - old_sum >= mean * added) return true;
-  undo_cone(topo, s.cavity, s.old_tets, s.created, s.incident);
+  undo_cone(topo, s.cavity, s.old_tets, s.trial);
   return false;
 }
 
@@ -99,7 +100,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
       if (!topo.edge_ring(t, kTetEdges[longest][0], kTetEdges[longest][1], ring)) continue;
       if (!try_split(topo, ring, mean, scratch, s)) continue;
       ++split;
-      made.insert(made.end(), s.created.begin(), s.created.end());
+      made.insert(made.end(), s.trial.created.begin(), s.trial.created.end());
     }
     // The next round: the tets the splits made that are still needles
     // (a refused split would be refused again: its ring has not changed).

@@ -46,6 +46,25 @@ constexpr size_t kWorkPerBadTet = 4;
 // radius ratio, which the relaxation sweeps then win back for less.
 constexpr double kSmoothingAngle = 30;
 
+// Per slot: the change count (TetTopology::changes) when the tet's flip
+// search last found nothing. The search reads only the stars of the tet's
+// vertices, so while those are unchanged it would find nothing again and
+// is not run: the meshes are the same byte for byte (a slot reused by a new
+// tet has its vertices' marks past the count).
+class FailedFlips {
+ public:
+  bool known(const TetTopology& topo, uint32_t t) const {
+    return t < at_.size() && at_[t] != 0 && topo.unchanged_since(t, at_[t]);
+  }
+  void add(const TetTopology& topo, uint32_t t) {
+    if (at_.size() <= t) at_.resize(topo.slots(), 0);
+    at_[t] = topo.changes();
+  }
+
+ private:
+  std::vector<uint32_t> at_;
+};
+
 // Alive tets below `target`, worst first.
 std::vector<uint32_t> tets_below(const TetTopology& topo, double target) {
   std::vector<std::pair<double, uint32_t>> bad;
@@ -104,16 +123,19 @@ bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::
 }
 
 // Step 1 of a pass; the number of flips applied.
-size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats) {
+size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats, FailedFlips& failed) {
   std::vector<uint32_t> work = tets_below(topo, target);
   const size_t cap = kWorkPerBadTet * work.size();
   std::vector<uint32_t> created;
   size_t applied = 0;
   for (size_t i = 0; i < work.size() && i < cap; ++i) {
     const uint32_t t = work[i];
-    if (!topo.alive(t) || topo.quality(t) >= target) continue;
+    if (!topo.alive(t) || topo.quality(t) >= target || failed.known(topo, t)) continue;
     created.clear();
-    if (!improve_topology(topo, t, stats, created)) continue;
+    if (!improve_topology(topo, t, stats, created)) {
+      failed.add(topo, t);
+      continue;
+    }
     ++applied;
     for (uint32_t c : created)
       if (topo.quality(c) < target) work.push_back(c);
@@ -417,10 +439,11 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       for (size_t v = 0; v < fixed.size(); ++v) fixed[v] |= (*frozen)[v] != 0;
     const double target = quality_of_angle(options.quality_target_deg);
     SmoothingScratch scratch;
+    FailedFlips failed_flips;
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;
       part = Stopwatch();
-      const size_t flips = topology_pass(topo, target, stats);
+      const size_t flips = topology_pass(topo, target, stats, failed_flips);
       stats.topology_seconds += part.wall();
       part = Stopwatch();
       const size_t inserted =

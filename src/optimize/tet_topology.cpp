@@ -46,6 +46,7 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   const uint32_t n = slots();
   twin_.assign(4 * static_cast<size_t>(n), kNone);
   vertex_tet_.assign(mesh_.num_vertices(), kNone);
+  changed_at_.assign(mesh_.num_vertices(), 0);
   mark_.assign(n, 0);
   quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
   // The tets of every vertex (ascending), then each face's twin among the
@@ -94,6 +95,7 @@ uint32_t TetTopology::add_vertex(const double* p, uint64_t global_id) {
   mesh_.xyz.insert(mesh_.xyz.end(), p, p + 3);
   if (!mesh_.global_ids.empty()) mesh_.global_ids.push_back(global_id);
   vertex_tet_.push_back(kNone);
+  changed_at_.push_back(0);
   return v;
 }
 
@@ -102,6 +104,7 @@ void TetTopology::remove_last_vertex() {
   mesh_.xyz.resize(mesh_.xyz.size() - 3);
   if (!mesh_.global_ids.empty()) mesh_.global_ids.pop_back();
   vertex_tet_.pop_back();
+  changed_at_.pop_back();
 }
 
 std::vector<uint8_t> TetTopology::boundary_vertices() const {
@@ -140,10 +143,13 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
   while (capacity < 2 * (4 * old_tets.size() + new_tets.size())) capacity *= 2;  // at most half full
   matches_.assign(capacity, FaceMatch{});
   const uint32_t stamp = next_stamp();
+  const uint32_t change = next_change();
   for (uint32_t t : old_tets) {
     PARTET_ASSERT(alive(t), "replacing a dead tet");
     mark_[t] = stamp;
+    for (int k = 0; k < 4; ++k) changed_at_[tet(t)[k]] = change;
   }
+  for (uint32_t v : new_tets) changed_at_[v] = change;
   size_t open = 0;  // faces waiting: outer ones not closed, new ones without a partner
   for (uint32_t t : old_tets) {
     for (int f = 0; f < 4; ++f) {
@@ -233,10 +239,13 @@ double TetTopology::measure(uint32_t t) const {
 
 void TetTopology::move_vertex(uint32_t v, const double* x) {
   std::copy_n(x, 3, &mesh_.xyz[3 * v]);
-  std::vector<uint32_t> star;
-  vertex_star(v, star);
-  for (uint32_t t : star) quality_[t] = std::numeric_limits<double>::quiet_NaN();
-  if (change_log_) change_log_->insert(change_log_->end(), star.begin(), star.end());
+  vertex_star(v, moved_star_);
+  const uint32_t change = next_change();
+  for (uint32_t t : moved_star_) {
+    quality_[t] = std::numeric_limits<double>::quiet_NaN();
+    for (int k = 0; k < 4; ++k) changed_at_[tet(t)[k]] = change;
+  }
+  if (change_log_) change_log_->insert(change_log_->end(), moved_star_.begin(), moved_star_.end());
 }
 
 uint32_t TetTopology::next_stamp() const {

@@ -115,6 +115,30 @@ class TetTopology {
   // quality may have changed since, trials that were undone included.
   void log_changes(std::vector<uint32_t>* log) { change_log_ = log; }
 
+  // Change marks. Every replace() and move_vertex() is a change, counted
+  // from 1; each vertex keeps the count of the last change to its star (a
+  // tet having it replaced, or a vertex of such a tet moved). A local
+  // operation on tet t that reads only the stars of t's vertices (a flip
+  // search) and failed at count c fails again while unchanged_since(t, c):
+  // the same decisions on the same tets and points. The count saturates at
+  // UINT32_MAX; then nothing is unchanged.
+  uint32_t changes() const { return changes_; }
+  bool unchanged_since(uint32_t t, uint32_t count) const {
+    if (count == UINT32_MAX) return false;
+    for (int k = 0; k < 4; ++k)
+      if (changed_at_[tet(t)[k]] > count) return false;
+    return true;
+  }
+  // A trial undone exactly (apply_cone / undo_cone) restores the marks of
+  // the vertices it touched: `quads`' vertices, saved before the trial.
+  void save_marks(std::span<const uint32_t> quads, std::vector<uint32_t>& saved) const {
+    saved.clear();
+    for (uint32_t v : quads) saved.push_back(changed_at_[v]);
+  }
+  void restore_marks(std::span<const uint32_t> quads, std::span<const uint32_t> saved) {
+    for (size_t i = 0; i < quads.size(); ++i) changed_at_[quads[i]] = saved[i];
+  }
+
   // Writes the alive tets back to the mesh's tet array, in slot order.
   void compact();
 
@@ -131,6 +155,10 @@ class TetTopology {
   double measure(uint32_t t) const;
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   std::vector<uint32_t>* change_log_ = nullptr;  // see log_changes
+  uint32_t changes_ = 1;              // see changes()
+  std::vector<uint32_t> changed_at_;  // per vertex: the last change to its star
+  std::vector<uint32_t> moved_star_;  // move_vertex's star walk, reused
+  uint32_t next_change() { return changes_ == UINT32_MAX ? changes_ : ++changes_; }
   mutable std::vector<uint32_t> mark_; // per slot: stamp of the last star walk or replace
   mutable uint32_t stamp_ = 0;
   mutable std::vector<uint32_t> vertex_mark_;  // per vertex: stamp of the last star_neighbours

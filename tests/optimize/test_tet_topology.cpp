@@ -1,12 +1,16 @@
 // TetTopology's bookkeeping that the optimizer's trials rely on: a trial
 // replace() and its reverse, with the incident tets restored, leave every
 // slot and every vertex star (and its walk order) as they were; the
-// neighbours of a star come each once, ascending (star_neighbours).
+// neighbours of a star come each once, ascending (star_neighbours); the
+// change marks name exactly the tets whose vertex stars a move or a
+// replace touched, and a cone trial undone leaves them as they were.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <vector>
 
+#include "optimize/insertion.hpp"
+#include "optimize/smoothing.hpp"
 #include "optimize/tet_topology.hpp"
 #include "optimize_test_util.hpp"
 
@@ -116,6 +120,79 @@ TEST(TetTopology, StarNeighboursComeOnceAscending) {
   topo.vertex_star(13, star);
   topo.star_neighbours(13, star, got);
   EXPECT_EQ(got.size(), 14u);  // the centre of a Kuhn lattice has 14 neighbours
+}
+
+// Per alive tet: whether it is unchanged since change count `count`.
+std::vector<bool> unchanged(const TetTopology& topo, uint32_t count) {
+  std::vector<bool> out;
+  for (uint32_t t = 0; t < topo.slots(); ++t) out.push_back(topo.alive(t) && topo.unchanged_since(t, count));
+  return out;
+}
+
+// Per alive tet: whether one of its vertices is in `touched`.
+std::vector<bool> untouched(const TetTopology& topo, const std::vector<uint32_t>& touched) {
+  std::vector<bool> out;
+  for (uint32_t t = 0; t < topo.slots(); ++t) {
+    bool clear = topo.alive(t);
+    for (int k = 0; k < 4; ++k)
+      clear = clear && std::find(touched.begin(), touched.end(), topo.tet(t)[k]) == touched.end();
+    out.push_back(clear);
+  }
+  return out;
+}
+
+TEST(TetTopology, ChangeMarksFollowMovesAndReplacesAndTrialsUndone) {
+  TetMesh m = test::kuhn_lattice(3);
+  TetTopology topo(m);
+  const uint32_t centre = 21;  // (1, 1, 1), interior
+  std::vector<uint32_t> star, around;
+  topo.vertex_star(centre, star);
+  topo.star_neighbours(centre, star, around);
+  around.push_back(centre);
+
+  // A move changes the stars of the vertex and of its neighbours.
+  const uint32_t before_move = topo.changes();
+  const double nudged[3] = {1.02, 0.99, 1.01};
+  topo.move_vertex(centre, nudged);
+  const std::vector<bool> after_move = unchanged(topo, before_move);
+  EXPECT_EQ(after_move, untouched(topo, around));
+  EXPECT_GT(std::count(after_move.begin(), after_move.end(), true), 0);
+  EXPECT_GT(std::count(after_move.begin(), after_move.end(), false), 0);
+
+  // A cone trial undone (as insertion trials are) changes nothing.
+  const uint32_t before_trial = topo.changes();
+  std::vector<uint32_t> members = star, old_tets, new_tets;
+  std::sort(members.begin(), members.end());
+  topo.tet_vertices(star, old_tets);
+  const double inside[3] = {1.05, 1.0, 0.97};
+  const uint32_t v = topo.add_vertex(inside, 0);
+  for (uint32_t t : star)
+    for (uint32_t f = 0; f < 4; ++f) {
+      const uint32_t other = topo.twin(4 * t + f);
+      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
+      new_tets.insert(new_tets.end(), topo.tet(t), topo.tet(t) + 4);
+      new_tets[new_tets.size() - 4 + f] = v;
+    }
+  SmoothingScratch scratch;
+  ConeTrial trial;
+  apply_cone(topo, star, old_tets, new_tets, scratch, trial);
+  EXPECT_GT(topo.changes(), before_trial);
+  undo_cone(topo, star, old_tets, trial);
+  const std::vector<bool> after_trial = unchanged(topo, before_trial);
+  EXPECT_EQ(std::count(after_trial.begin(), after_trial.end(), false), 0);
+
+  // A replace kept changes the stars of the cavity's vertices.
+  const uint32_t before_replace = topo.changes();
+  std::vector<uint32_t> created;
+  const uint32_t w = topo.add_vertex(inside, 0);
+  for (uint32_t& x : new_tets)
+    if (x == v) x = w;
+  topo.replace(star, new_tets, created);
+  std::vector<uint32_t> cavity_vertices = old_tets;
+  cavity_vertices.push_back(w);
+  const std::vector<bool> after_replace = unchanged(topo, before_replace);
+  EXPECT_EQ(after_replace, untouched(topo, cavity_vertices));
+  EXPECT_GT(std::count(after_replace.begin(), after_replace.end(), true), 0);
 }
 
 }  // namespace
