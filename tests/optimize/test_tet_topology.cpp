@@ -48,13 +48,10 @@ Snapshot snapshot(const TetTopology& topo) {
   return s;
 }
 
-// Cones a new vertex at p to the outer faces of `cavity` and takes it out
-// again, as insertion trials do; with `restore`, the incident tets too.
-void trial(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, bool restore) {
-  std::vector<uint32_t> members = cavity, old_tets, new_tets, created, restored, incident;
+// The tets joining the outer faces of `cavity` to vertex v.
+std::vector<uint32_t> cone_tets(const TetTopology& topo, const std::vector<uint32_t>& cavity, uint32_t v) {
+  std::vector<uint32_t> members = cavity, new_tets;
   std::sort(members.begin(), members.end());
-  topo.tet_vertices(cavity, old_tets);
-  const uint32_t v = topo.add_vertex(p, 0);
   for (uint32_t t : cavity)
     for (uint32_t f = 0; f < 4; ++f) {
       const uint32_t other = topo.twin(4 * t + f);
@@ -62,6 +59,16 @@ void trial(TetTopology& topo, const std::vector<uint32_t>& cavity, const double*
       new_tets.insert(new_tets.end(), topo.tet(t), topo.tet(t) + 4);
       new_tets[new_tets.size() - 4 + f] = v;
     }
+  return new_tets;
+}
+
+// Cones a new vertex at p to the outer faces of `cavity` and takes it out
+// again, as insertion trials do; with `restore`, the incident tets too.
+void trial(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, bool restore) {
+  std::vector<uint32_t> old_tets, created, restored, incident;
+  topo.tet_vertices(cavity, old_tets);
+  const uint32_t v = topo.add_vertex(p, 0);
+  const std::vector<uint32_t> new_tets = cone_tets(topo, cavity, v);
   topo.incident_tets(old_tets, incident);
   topo.replace(cavity, new_tets, created);
   topo.replace(created, old_tets, restored);
@@ -161,18 +168,11 @@ TEST(TetTopology, ChangeMarksFollowMovesAndReplacesAndTrialsUndone) {
 
   // A cone trial undone (as insertion trials are) changes nothing.
   const uint32_t before_trial = topo.changes();
-  std::vector<uint32_t> members = star, old_tets, new_tets;
-  std::sort(members.begin(), members.end());
+  std::vector<uint32_t> old_tets;
   topo.tet_vertices(star, old_tets);
   const double inside[3] = {1.05, 1.0, 0.97};
   const uint32_t v = topo.add_vertex(inside, 0);
-  for (uint32_t t : star)
-    for (uint32_t f = 0; f < 4; ++f) {
-      const uint32_t other = topo.twin(4 * t + f);
-      if (other != TetTopology::kNone && std::binary_search(members.begin(), members.end(), other / 4)) continue;
-      new_tets.insert(new_tets.end(), topo.tet(t), topo.tet(t) + 4);
-      new_tets[new_tets.size() - 4 + f] = v;
-    }
+  std::vector<uint32_t> new_tets = cone_tets(topo, star, v);
   SmoothingScratch scratch;
   ConeTrial trial;
   apply_cone(topo, star, old_tets, new_tets, scratch, trial);
