@@ -9,14 +9,11 @@
 #include <numbers>
 #include <vector>
 
+#include "optimize/tet_edges.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
 namespace {
-
-// The other two corners of each edge: the faces at the edge are those
-// opposite them.
-constexpr int kEdgeFaces[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
 
 // One (cavity tet, edge) incidence: the edge's sorted vertex pair, the
 // tet's index in the cavity, the local edge, and how many of the tet's two
@@ -71,7 +68,7 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
     for (uint8_t e = 0; e < 6; ++e) {
       const uint32_t x = v[kTetEdges[e][0]], y = v[kTetEdges[e][1]];
       const uint64_t key = (uint64_t{std::min(x, y)} << 32) | std::max(x, y);
-      const int outer_faces = int{outer[kEdgeFaces[e][0]]} + int{outer[kEdgeFaces[e][1]]};
+      const int outer_faces = int{outer[kTetEdgeFaces[e][0]]} + int{outer[kTetEdgeFaces[e][1]]};
       out.incidences.push_back({key, i, e, static_cast<uint8_t>(outer_faces)});
     }
   }
@@ -83,8 +80,8 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
 // unit complex number (cos, sin): between the faces opposite the edge's
 // other two corners, pi minus the angle of their outward normals.
 void unit_angle(const CavityEdges& edges, const Incidence& in, double& c, double& s) {
-  const double* nk = &edges.normals[12 * size_t{in.tet} + 3 * kEdgeFaces[in.edge][0]];
-  const double* nl = &edges.normals[12 * size_t{in.tet} + 3 * kEdgeFaces[in.edge][1]];
+  const double* nk = &edges.normals[12 * size_t{in.tet} + 3 * kTetEdgeFaces[in.edge][0]];
+  const double* nl = &edges.normals[12 * size_t{in.tet} + 3 * kTetEdgeFaces[in.edge][1]];
   const double x[3] = {nk[1] * nl[2] - nk[2] * nl[1], nk[2] * nl[0] - nk[0] * nl[2], nk[0] * nl[1] - nk[1] * nl[0]};
   c = -(nk[0] * nl[0] + nk[1] * nl[1] + nk[2] * nl[2]);
   s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);

@@ -96,7 +96,6 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
                 CavityGrowth* growth = nullptr) {
   std::vector<uint32_t> old_tets, new_tets;
   ConeTrial trial;
-  const std::vector<uint32_t>& created = trial.created;
   const std::vector<uint32_t> members = sorted_copy(cavity);
   double old_quality = std::numeric_limits<double>::infinity();
   double old_deficit = 0, new_deficit = 0;  // sum of max(0, bar - quality)
@@ -143,7 +142,7 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   }
   apply_cone(topo, cavity, old_tets, new_tets, scratch, trial);
   double new_quality = std::numeric_limits<double>::infinity();
-  for (uint32_t t : created) {
+  for (uint32_t t : trial.created) {
     const double q = topo.quality(t);
     new_quality = std::min(new_quality, q);
     new_deficit += std::max(0.0, bar - q);
@@ -158,7 +157,8 @@ bool try_cavity(TetTopology& topo, const std::vector<uint32_t>& cavity, const do
   const bool pays = rule == InsertionRule::kShortfall
                         ? new_deficit <= old_deficit || (old_quality < ten && new_quality >= ten)
                         : old_quality < quality_of_angle(kDegenerateAngle) ||
-                              new_angles_no_worse(topo, old_tets, created, old_quality < quality_of_angle(kTradeAngle));
+                              new_angles_no_worse(topo, old_tets, trial.created,
+                                                  old_quality < quality_of_angle(kTradeAngle));
   if (new_quality > old_quality && pays) {
     if (growth) growth->vertices_removed += sorted_copy(vanished).size();
     return true;

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "optimize/tet_edges.hpp"
+
 namespace partet {
 namespace {
 
@@ -21,10 +23,6 @@ double dot(V3 u, V3 v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
 V3 scaled(V3 u, double s) { return {u.x * s, u.y * s, u.z * s}; }
 V3 plus(V3 u, V3 v) { return {u.x + v.x, u.y + v.y, u.z + v.z}; }
 
-// Edges as vertex pairs, in the order of tet_quality's ratios, and the two
-// faces (by opposite vertex) at each.
-constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-constexpr int kEdgeFaces[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
 
 }  // namespace
 
@@ -62,7 +60,7 @@ double tet_quality_gradient(const double* const p[4], int j, double gradient[3])
   int pick = 0;
   double ratio = 0;
   for (int e = 0; e < 6; ++e) {
-    const double r = dot(edges[e], edges[e]) / (m[kEdgeFaces[e][0]] * m[kEdgeFaces[e][1]]);
+    const double r = dot(edges[e], edges[e]) / (m[kTetEdgeFaces[e][0]] * m[kTetEdgeFaces[e][1]]);
     if (e == 0 || (d >= 0 ? r < ratio : r > ratio)) {
       ratio = r;
       pick = e;
@@ -73,12 +71,12 @@ double tet_quality_gradient(const double* const p[4], int j, double gradient[3])
   // d(6V)/dp_j: the normal of the face opposite p_j, towards p_j.
   const V3 grad_d = j == 0 ? scaled(plus(plus(n[1], n[2]), n[3]), -1) : n[j];
   V3 log_grad = {0, 0, 0};  // d(ln |e| - ln m_a / 2 - ln m_b / 2)/dp_j
-  const int u = kEdge[pick][0], w = kEdge[pick][1];
+  const int u = kTetEdges[pick][0], w = kTetEdges[pick][1];
   if (u == j || w == j) {
     const V3 e = sub(p[j], p[u == j ? w : u]);
     log_grad = scaled(e, 1 / dot(e, e));
   }
-  for (int f : kEdgeFaces[pick]) {
+  for (int f : kTetEdgeFaces[pick]) {
     if (f == j) continue;  // the face opposite p_j does not move
     // Face f's other two vertices y, z: m = |(y - x) x (z - x)|^2 has
     // gradient 2 (y - z) x n in x = p_j, n = (y - x) x (z - x).

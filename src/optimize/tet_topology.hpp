@@ -24,6 +24,7 @@
 
 #include "check/quality.hpp"
 #include "core/tet_mesh.hpp"
+#include "optimize/tet_edges.hpp"
 
 namespace partet {
 
@@ -179,9 +180,6 @@ class TetTopology {
   FaceMatch* find_match(const FaceKey& key);
   std::vector<FaceMatch> matches_;
 };
-
-// Local vertex pairs of the six edges of a tet.
-inline constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 // tet_radius_ratio of the tet with vertex quadruple v (slots or not).
 inline double radius_ratio_of(const TetTopology& topo, const uint32_t* v) {
