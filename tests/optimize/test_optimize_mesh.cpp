@@ -418,6 +418,30 @@ TEST(OptimizeMesh, SmoothingAroundAStuckWorstTetLiftsTheSmallestAngle) {
   }
 }
 
+// Vertex insertion runs in every pass but the last of two or more: with the
+// rounds on the worst tet and the needle splits off (they insert too), two
+// passes insert exactly what one does (the first pass is the same in both),
+// and three insert more than two (their second pass inserts).
+TEST(OptimizeMesh, TheLastOfSeveralPassesInsertsNothing) {
+  OptimizeOptions options;
+  options.worst_tet_rounds = 0;
+  options.needle_radius_ratio = 0;
+  const TetMesh original = unoptimized("good/part.off", "");
+  size_t inserted[4] = {0, 0, 0, 0};
+  for (int passes = 1; passes <= 3; ++passes) {
+    TetMesh mesh = original;
+    options.passes = passes;
+    const OptimizeStats stats = optimize_mesh(mesh, options);
+    ASSERT_EQ(stats.passes, passes);
+    inserted[passes] = stats.vertices_inserted + stats.vertices_collapsed;
+    EXPECT_TRUE(validate_mesh(mesh, nullptr).valid) << passes;
+    EXPECT_EQ(boundary_faces(mesh), boundary_faces(original)) << passes;
+  }
+  EXPECT_GT(inserted[1], 0u);
+  EXPECT_EQ(inserted[2], inserted[1]);
+  EXPECT_GT(inserted[3], inserted[2]);
+}
+
 // Needle splits (needle_split.hpp) on CAD parts whose needle surface
 // triangles leave needles inside: with the relaxation off, so that both
 // runs reach the sweep with the same mesh, the splits raise the mean radius
