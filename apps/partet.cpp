@@ -77,8 +77,8 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
                "When meshing cannot finish (exit 3), write the tets made to OUTPUT and the front left to "
                "OUTPUT's stem + .front.off");
   app.add_option("--optimize", o.optimize_passes,
-                 "Quality optimization passes on the finished mesh (flips, edge removal, vertex insertion, "
-                 "smoothing; the surface is never changed); 0 for none")
+                 "Quality optimization passes on the finished mesh (flips, edge removal, vertex insertion "
+                 "but in the last of several, smoothing; the surface is never changed); 0 for none")
       ->type_name("N")->check(CLI::NonNegativeNumber)->capture_default_str();
   bool no_optimize = false;
   app.add_flag("--no-optimize", no_optimize, "Skip quality optimization (same as --optimize 0)");
