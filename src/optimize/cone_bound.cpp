@@ -91,9 +91,9 @@ void unit_angle(const CavityEdges& edges, const Incidence& in, double& c, double
   s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
 }
 
-// Calls edge(c, s) with the cavity's interior angle, as an unnormalised
-// complex number, at each edge where exactly two outer faces meet; stops
-// when it returns false.
+// Calls edge(c, s) with the cavity's interior angle, as a complex number
+// of length 1 up to rounding, at each edge where exactly two outer faces
+// meet; stops when it returns false.
 template <class Edge>
 void for_each_two_face_edge(const CavityEdges& edges, Edge&& edge) {
   const std::vector<Incidence>& in = edges.incidences;

@@ -8,10 +8,9 @@
 //     insertion bar, worst first, where it pays (insertion.hpp), else one
 //     of its vertices collapsed where that pays (collapse.hpp); not in the
 //     last of two or more passes, which leaves the vertices of the earlier
-//     ones to the flips and smoothing (a third insertion step was 11 % of
-//     the optimizer's time over the corpus and its refinements; it kept
-//     the share of tets under 10 degrees lower on the CAD parts, handle r1
-//     4.2 % instead of 5.6 %, either way under a third of the best peer's);
+//     ones to the flips and smoothing (docs/decisions.md, "No vertex
+//     insertion in the last optimizer pass": 11 % of the optimizer's time
+//     for somewhat more slivers on the CAD parts);
 //  3. smoothing: the free vertices of the tets still below the target or
 //     30 degrees, whichever is lower, in index order (inserted vertices
 //     are free).
