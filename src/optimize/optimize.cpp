@@ -24,6 +24,7 @@
 #include "optimize/optimize.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <utility>
 
@@ -304,12 +305,14 @@ bool smooth_worst_jointly(TetTopology& topo, uint32_t worst, const std::vector<u
 // kSheetAngle, the sheet of nearly flat tets around it lifted (lift_sheet);
 // each change is kept only when the smallest dihedral angle of the tets it
 // changes does not drop and no more of them have one under 10 degrees
-// (min_angle_no_worse), until none of them changes anything or after `rounds`
+// (min_angle_no_worse), until none of them changes anything (see
+// OptimizeOptions::set_aside_stuck_on_frozen for the exception) or after `rounds`
 // (the passes leave alone a tet above the insertion bar, so a small mesh's
 // smallest angle could stay where a vertex would lift it: the cube's six
 // tets of 35.3 degrees become twelve of 45 around a centre vertex).
 void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& options,
-                      const std::vector<uint8_t>& frozen, OptimizeStats& stats, SmoothingScratch& scratch) {
+                      const std::vector<uint8_t>& frozen, const std::vector<uint8_t>* caller_frozen,
+                      OptimizeStats& stats, SmoothingScratch& scratch) {
   std::vector<uint32_t> created, before, star, neighbours;
   JointScratch joint;
   CavityGrowth growth{frozen};
@@ -335,8 +338,16 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
   // the tets changed since, not over the whole mesh every round (femur r3:
   // 5.4 M tets, hundreds of rounds).
   std::vector<uint32_t> flat_tets, changed_tets;
+  // Tets set aside (options.set_aside_stuck_on_frozen): slot and corners,
+  // so a slot reused by a new tet counts again.
+  std::vector<std::array<uint32_t, 5>> aside;
+  const auto set_aside = [&](uint32_t t) {
+    for (const auto& a : aside)
+      if (a[0] == t && std::equal(a.begin() + 1, a.end(), topo.tet(t))) return true;
+    return false;
+  };
   const auto worse = [&](uint32_t t, uint32_t than) {
-    return than == TetTopology::kNone || topo.quality(t) < topo.quality(than);
+    return (than == TetTopology::kNone || topo.quality(t) < topo.quality(than)) && (aside.empty() || !set_aside(t));
   };
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
@@ -412,7 +423,21 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
         changed = true;
       }
     }
-    if (!changed) break;
+    const auto on_frozen = [&] {
+      for (int k = 0; k < 4; ++k) {
+        const uint32_t v = topo.tet(worst)[k];
+        if (v < caller_frozen->size() && (*caller_frozen)[v]) return true;
+      }
+      return false;
+    };
+    if (!changed && !(options.set_aside_stuck_on_frozen && caller_frozen && round < options.worst_tet_rounds &&
+                      on_frozen()))
+      break;
+    if (!changed) {
+      std::array<uint32_t, 5> a{worst};
+      std::copy_n(topo.tet(worst), 4, a.begin() + 1);
+      aside.push_back(a);
+    }
   }
   topo.log_changes(nullptr);
   stats.vertices_removed += growth.vertices_removed;
@@ -467,7 +492,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       stats.topology_seconds += part.wall();
     }
     part = Stopwatch();
-    worst_tet_rounds(topo, target, options, fixed, stats, scratch);
+    worst_tet_rounds(topo, target, options, fixed, frozen, stats, scratch);
     if (options.needle_radius_ratio > 0 && options.insert_vertices)
       stats.needles_split += split_needles(topo, options.needle_radius_ratio, scratch);
     stats.insertion_seconds += part.wall();

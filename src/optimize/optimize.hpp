@@ -64,6 +64,13 @@ struct OptimizeOptions {
   // Rounds on the mesh's worst tet after the passes (flip, insert, smooth
   // while it is below the target and something changes); 0 for none.
   int worst_tet_rounds = 64;
+  // In those rounds, a worst tet that cannot be changed and has a vertex
+  // the caller froze is set aside, and the rounds go on with the next worst
+  // (else they end there). The distributed optimizer's parts use it, with
+  // their cut vertices frozen: a part's worst tet often lies on a cut it
+  // cannot move, and ending there would leave its other bad tets as the
+  // passes left them.
+  bool set_aside_stuck_on_frozen = false;
   // Then (unless worst_tet_rounds is 0), while the worst tet has an angle
   // under 1 degree, up to this many rounds more: each may lift one tet of
   // a sheet of flat tets (joint r3: 89 tets under 1e-6 degrees; 64 rounds

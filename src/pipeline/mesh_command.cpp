@@ -3,10 +3,12 @@
 // balance), classify leaves, make the interior set manifold (demoting
 // leaves to too close), template the interior, on P > 1 ranks partition
 // the boundary leaves (and gather the tree and core on rank 0, where the
-// later steps run for now), make the initial front.
+// face removals run for now), make the initial front.
 // Then tree-supported face removals and, for the faces they leave, face
 // removals with new vertices; a front left after those exits 3 (naming
 // where); --stop-after templates writes the templated core and exits 0.
+// Then quality optimization, on the ranks' parts when P > 1
+// (optimize_step.hpp).
 #include "pipeline/mesh_command.hpp"
 
 #include <algorithm>
@@ -36,6 +38,7 @@
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/cone_alternative.hpp"
+#include "pipeline/optimize_step.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
@@ -394,9 +397,9 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
   int code = kExitOk;
   std::string message;
   MeshState s;
-  // On P > 1 ranks the octree and the templates are distributed; the later
-  // steps run on rank 0 (the others take part in every step for agreement
-  // and timings, and write empty pieces).
+  // On P > 1 ranks the octree and the templates are distributed, and so is
+  // the optimizer; the face removals run on rank 0 (the others take part in
+  // every step for agreement and timings, and write empty pieces).
   const bool root_rank = comm.rank() == 0;
   const bool distributed = comm.size() > 1;
   // Whether rank 0 needs the whole tree and core after templating.
@@ -619,40 +622,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       release_build_state(s);
       QualityStats optimized;  // the front's mesh after the optimizer (rank 0)
       if (options.optimize_passes > 0) {
-        report.run_step("optimize", [&] {
-          if (!root_rank) return ojson::object();
-          OptimizeStats n = optimize_mesh(s.mesh, optimize_options(options));
-          optimized = n.after;
-          if (n.vertices_collapsed + n.vertices_removed > 0) drop_unused_vertices(s.mesh);
-          ojson c;
-          for (const auto& [when, q] : {std::pair{"before", n.before}, std::pair{"after", n.after}}) {
-            const double tets = static_cast<double>(std::max<size_t>(q.tets, 1));
-            c[std::string("min dihedral ") + when] = q.min_dihedral_deg;
-            c[std::string("max dihedral ") + when] = q.max_dihedral_deg;
-            c[std::string("% under 10 deg ") + when] = 100.0 * static_cast<double>(q.dihedral_under_10) / tets;
-            c[std::string("mean radius ratio ") + when] = q.radius_ratio_mean;
-          }
-          c["2-3 flips"] = n.flips_23;
-          c["3-2 flips"] = n.flips_32;
-          c["4-4 flips"] = n.flips_44;
-          c["edge removals"] = n.edge_removals;
-          c["multi-face removals"] = n.multi_face_removals;
-          c["vertices inserted"] = n.vertices_inserted;
-          c["vertices collapsed"] = n.vertices_collapsed;
-          c["vertices removed"] = n.vertices_removed;
-          c["vertices moved"] = n.vertices_moved;
-          c["vertices relaxed"] = n.vertices_relaxed;
-          c["sheets lifted"] = n.sheets_lifted;
-          c["needles split"] = n.needles_split;
-          c["passes"] = n.passes;
-          c["topology s"] = n.topology_seconds;
-          c["insertion s"] = n.insertion_seconds;
-          c["smoothing s"] = n.smoothing_seconds;
-          c["relaxation s"] = n.relaxation_seconds;
-          c["measure s"] = n.measure_seconds;
-          c["tets"] = s.mesh.num_tets();
-          return c;
-        });
+        report.run_step("optimize", [&] { return optimize_step(comm, s.mesh, optimize_options(options), optimized); });
       }
       if (options.optimize_passes > 0 &&
           comm.max(static_cast<int64_t>(root_rank && s.mesh.num_triangles() <= kConeTriangles)) > 0) {

@@ -1,0 +1,54 @@
+// Quality optimization on P ranks (paper §4.1 steps 11-12) of a mesh held
+// whole on rank 0:
+//  1. partition: the tets' centroids are split by recursive inertial
+//     bisection (partition_points, RIB) into P parts of equal tet counts;
+//  2. each rank optimizes its part (optimize_mesh, mesh_parts.hpp): the
+//     faces on the cuts are the parts' boundary, so their vertices stay
+//     frozen and the parts need no communication while they work;
+//  3. the parts are gathered and joined on rank 0;
+//  4. the band: what the parts could not touch (the tets with a vertex on
+//     a cut) and the worst of what they left (the tets with a dihedral
+//     angle under kBandAngle degrees: a part's rounds on its worst tet stop
+//     at a tet on a cut they cannot move), grown by one ring of tets, is
+//     optimized once more on rank 0 as a part of its own, the rest frozen
+//     around it, in at most kBandPasses passes. This stands in for the
+//     paper's final repartitioning, which moves the interfaces so that
+//     their tets are optimized too.
+// On one rank it is optimize_mesh on the whole mesh. The mesh stays valid
+// throughout (every part's changes are optimize_mesh's, which keep it
+// valid), its boundary triangles and their vertices never change, and the
+// result depends on the mesh, the options and P only.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/tet_mesh.hpp"
+#include "optimize/optimize.hpp"
+#include "parallel/comm.hpp"
+
+namespace partet {
+
+// Tets with a dihedral angle under this many degrees after the parts join
+// the band, which is optimized in at most kBandPasses passes. Measured on
+// femur, couplingdown and handle r1 (docs/decisions.md, "The optimizer on
+// the ranks' parts"): 0 degrees leaves femur a 0-degree tet a part could
+// not reach; 10 degrees and three passes reoptimize most of the CAD parts'
+// bad tets, for as much time as the parts took.
+constexpr double kBandAngle = 2;
+constexpr int kBandPasses = 2;
+
+struct DistributedOptimizeStats {
+  OptimizeStats totals;  // counts summed over the parts and the band; before/after of the whole mesh
+  std::vector<int64_t> tets_per_rank;  // tets of each rank's part before optimizing
+  std::vector<double> part_seconds;    // wall time of each rank's part
+  size_t band_tets = 0;                // tets the band pass optimized
+  double band_seconds = 0;             // its wall time on rank 0
+};
+
+// Collective. `mesh` is whole on rank 0 (empty elsewhere, and left so),
+// without global ids. Unused vertices are dropped at the end.
+DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, const OptimizeOptions& options);
+
+}  // namespace partet
