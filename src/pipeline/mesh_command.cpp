@@ -2,13 +2,14 @@
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
 // balance), classify leaves, make the interior set manifold (demoting
 // leaves to too close), template the interior, on P > 1 ranks partition
-// the boundary leaves (and gather the tree and core on rank 0, where the
-// face removals run for now), make the initial front.
-// Then tree-supported face removals and, for the faces they leave, face
-// removals with new vertices; a front left after those exits 3 (naming
-// where); --stop-after templates writes the templated core and exits 0.
-// Then quality optimization, on the ranks' parts when P > 1
-// (optimize_step.hpp).
+// the boundary leaves (and gather the tree and core on every rank), make
+// the initial front.
+// Then tree-supported face removals (on P > 1 ranks each rank removes the
+// faces of its own leaves and rank 0 finishes: tree_removal_step.hpp) and,
+// for the faces they leave, face removals with new vertices (rank 0); a
+// front left after those exits 3 (naming where); --stop-after templates
+// writes the templated core and exits 0. Then quality optimization, on the
+// ranks' parts when P > 1 (optimize_step.hpp).
 #include "pipeline/mesh_command.hpp"
 
 #include <algorithm>
@@ -40,6 +41,7 @@
 #include "pipeline/cone_alternative.hpp"
 #include "pipeline/optimize_step.hpp"
 #include "pipeline/partition_step.hpp"
+#include "pipeline/tree_removal_step.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
 #include "templates/gather_core.hpp"
@@ -49,9 +51,6 @@
 namespace partet {
 
 namespace {
-
-// Shape bound (q of face_removal.hpp) of the first tree-supported removals.
-constexpr double kShapedRemovalQuality = 0.05;
 
 const char* stop_name(StopAfter s) {
   switch (s) {
@@ -105,14 +104,15 @@ struct MeshState {
   TemplateCore core;
   // On P > 1 ranks the tree is built, classified and templated distributed:
   // this rank's leaves, its local view (own leaves and ghost layers) and its
-  // part of the core; `tree` and `core` are then gathered on rank 0 when
-  // later steps need them (`whole_on_root`).
+  // part of the core; `tree` and `core` are then gathered on rank 0, or on
+  // every rank for the face removals, when later steps need them (`whole`:
+  // this rank holds them).
   DistributedOctree own;
   LinearOctree view;
   TemplateCore part;
   VertexLinks links;  // copies of this rank's template vertices on other ranks
   BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
-  bool whole_on_root = false;
+  bool whole = false;
   bool thin_core_refined = false;  // refine_thin_core changed the sizes
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
@@ -397,9 +397,10 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
   int code = kExitOk;
   std::string message;
   MeshState s;
-  // On P > 1 ranks the octree and the templates are distributed, and so is
-  // the optimizer; the face removals run on rank 0 (the others take part in
-  // every step for agreement and timings, and write empty pieces).
+  // On P > 1 ranks the octree, the templates, the tree-supported face
+  // removals and the optimizer are distributed; the tree-less removals run
+  // on rank 0 (the others take part in every step for agreement and
+  // timings, and write empty pieces).
   const bool root_rank = comm.rank() == 0;
   const bool distributed = comm.size() > 1;
   // Whether rank 0 needs the whole tree and core after templating.
@@ -473,7 +474,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       }
       if (!root_rank) return ojson::object();
       s.core = template_interior(s.tree, s.root);
-      s.whole_on_root = true;
+      s.whole = true;
       ojson c;
       c["tets"] = s.core.mesh.num_tets();
       c["vertices"] = s.core.mesh.num_vertices();
@@ -486,9 +487,12 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       });
     }
     if (distributed && gather) {
-      report.run_step("gather on rank 0", [&] {
-        gather_tree_and_core(comm, s.view, s.part, s.tree, s.core);
-        s.whole_on_root = true;
+      // Every rank works on a copy of the whole front in the face removals;
+      // for the templates' front alone (--front-out) rank 0 needs them.
+      const bool everywhere = options.stop_after == StopAfter::kNone;
+      report.run_step(everywhere ? "gather tree and core" : "gather on rank 0", [&] {
+        gather_tree_and_core(comm, s.view, s.part, s.tree, s.core, everywhere);
+        s.whole = root_rank || everywhere;
         ojson c;
         if (root_rank) c["vertices"] = s.core.mesh.num_vertices();
         return c;
@@ -511,13 +515,14 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       return c;
     });
     report.run_step("initial front", [&] {
-      if (!root_rank || !s.whole_on_root) return ojson::object();
+      if (!s.whole) return ojson::object();
       s.initial_front = make_initial_front(s.tree, s.root, s.core, s.surface);
       if (options.gap_vertices) {
         const GapVertices gap = gap_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close);
         add_free_vertices(s.initial_front, s.tree, gap.xyz, gap.global_ids, gap.leaf);
       }
       const InitialFront& front = s.initial_front;
+      if (!root_rank) return ojson::object();
       if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
       ojson c;
       c["faces"] = front.num_faces();
@@ -541,31 +546,10 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       RemovalMemo memo;
       std::string treeless_note;  // how the tree-less removals ended, when they left faces
       report.run_step("face removals (tree)", [&] {
-        if (!root_rank) return ojson::object();
-        front = std::make_unique<Front>(s.initial_front, s.tree, s.root);
+        if (!s.whole) return ojson::object();
         s.mesh = std::move(s.core.mesh);
-        // Well-shaped tets first (the best few targets of each face); the
-        // nearly flat ones a front may need only where nothing better was
-        // found.
-        RemovalOptions shaped;
-        shaped.min_quality = kShapedRemovalQuality;
-        const RemovalCounts first = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, shaped);
-        const RemovalCounts n = remove_faces_tree_supported(*front, s.tree, s.root, s.mesh, {}, nullptr, &memo);
-        // Gap vertices no tet took are dropped: the tree-less removals place
-        // their own where a cavity needs one, and a free vertex inside a
-        // cavity would only block its fills.
-        const size_t unused = drop_free_vertices(*front, s.tree);
-        ojson c;
-        // The closed faces (most slots by now) go before the tree-less
-        // removals allocate theirs.
-        memo.renumber(front->compact());
-        c["tets"] = first.tets + n.tets;
-        c["faces left"] = n.faces_left;
-        c["passes"] = first.passes + n.passes;
-        c["checks"] = first.checks + n.checks;
-        c["checks skipped"] = first.skipped_checks + n.skipped_checks;
-        c["gap vertices used"] = s.initial_front.free_vertices - unused;
-        return c;
+        const RankLeaves ranks{&s.boundary.front.leaves, &s.boundary.separators};
+        return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         report.run_step("face removals (tree-less)", [&] {

@@ -1,5 +1,5 @@
-// Rank 0 puts the ranks' leaves and core parts together (see
-// gather_core.hpp).
+// Rank 0 (or every rank) puts the ranks' leaves and core parts together
+// (see gather_core.hpp).
 #include "templates/gather_core.hpp"
 
 #include <algorithm>
@@ -64,11 +64,31 @@ std::string part_image(const LinearOctree& view, const TemplateCore& part, int r
 }  // namespace
 
 void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
-                          LinearOctree& tree, TemplateCore& core) {
-  const std::vector<std::string> images = comm.gather(part_image(view, part, comm.rank()), 0);
+                          LinearOctree& tree, TemplateCore& core, bool everywhere) {
+  std::vector<std::string> images = comm.gather(part_image(view, part, comm.rank()), 0);
   tree = LinearOctree();
   core = TemplateCore();
-  if (comm.rank() != 0) return;
+  if (everywhere) {
+    // Rank 0 sends every image to every rank, as one message.
+    std::string all;
+    if (comm.rank() == 0) {
+      std::vector<uint64_t> sizes;
+      for (const std::string& image : images) sizes.push_back(image.size());
+      put(all, sizes);
+      for (const std::string& image : images) all += image;
+    }
+    comm.broadcast(all, 0);
+    size_t pos = 0;
+    const std::vector<uint64_t> sizes = get<uint64_t>(all, pos);
+    images.clear();
+    for (uint64_t n : sizes) {
+      PARTET_ASSERT(pos + n <= all.size(), "truncated gathered core");
+      images.push_back(all.substr(pos, n));
+      pos += n;
+    }
+  } else if (comm.rank() != 0) {
+    return;
+  }
   struct Part {
     std::vector<double> xyz;
     std::vector<uint32_t> tets;

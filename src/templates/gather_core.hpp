@@ -1,6 +1,8 @@
-// Gathering a distributed tree and its templated core onto rank 0, for the
-// steps that still run there alone (initial front, face removals): rank 0
-// gets exactly what the one-rank pipeline has after templating.
+// Gathering a distributed tree and its templated core onto rank 0, or onto
+// every rank, for the steps that need the whole of them (the initial front
+// and the face removals, whose ranks each work on a copy of the whole
+// front: pipeline/tree_removal_step.hpp): they get exactly what the
+// one-rank pipeline has after templating.
 //
 // Each rank sends its own leaves (key, level, class), the face cases and
 // tet counts of those leaves and its part of the core (template_interior of
@@ -18,10 +20,11 @@
 namespace partet {
 
 // Collective. `view`: this rank's local view (owner = rank on its own
-// leaves); `part`: template_interior(view, root, rank). On rank 0, `tree`
-// and `core` become the whole tree (owner 0 everywhere: rank 0 works on all
-// of it) and template_interior(tree, root); elsewhere they are left empty.
+// leaves); `part`: template_interior(view, root, rank). On rank 0 (on
+// every rank with `everywhere`), `tree` and `core` become the whole tree
+// (owner 0 everywhere) and template_interior(tree, root); elsewhere they
+// are left empty.
 void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
-                          LinearOctree& tree, TemplateCore& core);
+                          LinearOctree& tree, TemplateCore& core, bool everywhere = false);
 
 }  // namespace partet

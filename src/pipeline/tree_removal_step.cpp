@@ -1,0 +1,107 @@
+// tree_removal_step: the two passes on one rank, or on every rank's copy of
+// the front with the other ranks' tets made again on rank 0 (see
+// tree_removal_step.hpp).
+#include "pipeline/tree_removal_step.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/timer.hpp"
+#include "partition/leaf_owners.hpp"
+
+namespace partet {
+
+namespace {
+
+// The shaped pass, then the plain one (with `memo`); their counts summed.
+RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
+                         RemovalMemo& memo) {
+  // Well-shaped tets first (the best few targets of each face); the
+  // nearly flat ones a front may need only where nothing better was found.
+  RemovalOptions shaped;
+  shaped.rank = rank;
+  shaped.min_quality = kShapedRemovalQuality;
+  RemovalOptions plain;
+  plain.rank = rank;
+  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped);
+  RemovalCounts n = remove_faces_tree_supported(front, tree, root, mesh, plain, nullptr, &memo);
+  n.tets += first.tets;
+  n.passes += first.passes;
+  n.checks += first.checks;
+  n.skipped_checks += first.skipped_checks;
+  return n;
+}
+
+std::string tets_image(const TetMesh& mesh, size_t first_tet) {
+  const size_t n = mesh.tets.size() - 4 * first_tet;
+  std::string out(n * sizeof(uint32_t), '\0');
+  if (n > 0) std::memcpy(out.data(), &mesh.tets[4 * first_tet], out.size());
+  return out;
+}
+
+std::vector<uint32_t> image_tets(const std::string& image) {
+  PARTET_ASSERT(image.size() % (4 * sizeof(uint32_t)) == 0, "truncated tets image");
+  std::vector<uint32_t> tets(image.size() / sizeof(uint32_t));
+  if (!tets.empty()) std::memcpy(tets.data(), image.data(), image.size());
+  return tets;
+}
+
+}  // namespace
+
+ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
+                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo) {
+  const bool root_rank = comm.rank() == 0;
+  const bool distributed = comm.size() > 1;
+  ojson c;
+  front = std::make_unique<Front>(initial, tree, root);
+  size_t tets = 0, passes = 0, checks = 0, skipped = 0;
+  if (distributed) {
+    PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
+    set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
+    const size_t core_tets = mesh.num_tets();
+    Stopwatch clock;
+    RemovalMemo rank_memo;
+    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), rank_memo);
+    const double rank_s = clock.wall();
+    c["tets per rank"] = comm.all_gather(static_cast<int64_t>(mine.tets));
+    c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
+    c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
+    c["rank s per rank"] = comm.all_gather(rank_s);
+    const std::vector<std::string> images = comm.gather(tets_image(mesh, core_tets), 0);
+    tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.tets)));
+    passes = mine.passes;
+    checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.checks)));
+    skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.skipped_checks)));
+    if (!root_rank) {
+      front.reset();
+      mesh = TetMesh{};
+      return ojson::object();
+    }
+    clock.restart();
+    size_t replayed = 0;
+    for (size_t r = 1; r < images.size(); ++r) replayed += replay_removal_tets(*front, tree, mesh, image_tets(images[r]));
+    c["tets replayed"] = replayed;
+    c["replay s"] = clock.wall();
+    std::fill(tree.owner.begin(), tree.owner.end(), 0);
+  }
+  const RemovalCounts n = two_passes(*front, tree, root, mesh, 0, memo);
+  // Gap vertices no tet took are dropped: the tree-less removals place
+  // their own where a cavity needs one, and a free vertex inside a cavity
+  // would only block its fills.
+  const size_t unused = drop_free_vertices(*front, tree);
+  // The closed faces (most slots by now) go before the tree-less removals
+  // allocate theirs.
+  memo.renumber(front->compact());
+  if (distributed) c["tets on rank 0 after"] = n.tets;
+  c["tets"] = tets + n.tets;
+  c["faces left"] = n.faces_left;
+  c["passes"] = passes + n.passes;
+  c["checks"] = checks + n.checks;
+  c["checks skipped"] = skipped + n.skipped_checks;
+  c["gap vertices used"] = initial.free_vertices - unused;
+  return c;
+}
+
+}  // namespace partet

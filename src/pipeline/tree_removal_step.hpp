@@ -1,0 +1,53 @@
+// The pipeline's tree-supported face removals (paper §4.1 step 4, and the
+// finishing steps on rank 0), on one rank or on P:
+//  - one rank: a pass taking only well-shaped tets (kShapedRemovalQuality),
+//    then one taking any valid tet, over the whole front;
+//  - P ranks: every rank holds the whole tree, core and initial front
+//    (gathered everywhere) and the leaves' owners (leaf_owners.hpp: the
+//    boundary partition's, the separators' for the other leaves); each
+//    rank runs the same two passes on its copy, making only the removals
+//    whose neighbourhood leaves are all its own (removals never
+//    communicate), so two ranks' tets never touch one leaf and are valid
+//    together. Rank 0 makes the other ranks' tets again on its front, in
+//    rank order (replay_removal_tets), takes every leaf as its own and runs
+//    the two passes over what is left: the faces near the cuts between the
+//    ranks' parts and those no rank could remove. This stands in for the
+//    paper's repartitioning of the face, edge and vertex interfaces (steps
+//    5-9), which would keep the work on the ranks.
+// Afterwards, on rank 0, the gap vertices no tet took are dropped and the
+// front is compacted; the other ranks end with no front and an empty mesh.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/tet_mesh.hpp"
+#include "front/face_removal.hpp"
+#include "front/front.hpp"
+#include "front/initial_front.hpp"
+#include "octree/octree.hpp"
+#include "parallel/comm.hpp"
+#include "partition/recursive_bisection.hpp"
+#include "pipeline/report.hpp"
+
+namespace partet {
+
+// Targets of the first pass make tets at least this well shaped (q of
+// face_removal.hpp).
+constexpr double kShapedRemovalQuality = 0.05;
+
+// The boundary partition's result, for P > 1 ranks.
+struct RankLeaves {
+  const LinearOctree* own = nullptr;             // this rank's boundary leaves after step 3
+  const std::vector<Separator>* separators = nullptr;
+};
+
+// Collective. `initial`, `tree` and `mesh` (the templated core, in the
+// front's vertex numbering) are whole on every rank that takes part (on one
+// rank, on it). On return `front` is rank 0's front (null elsewhere),
+// `mesh` rank 0's tets (empty elsewhere) and `memo` what rank 0's passes
+// learnt. `ranks` is ignored on one rank.
+ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
+                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo);
+
+}  // namespace partet

@@ -1,0 +1,137 @@
+// The tree-supported face removals on 1, 2 and 4 ranks (pipeline step 4 on
+// every rank's copy of the front, the other ranks' tets made again on rank
+// 0): the finished mesh is valid against the surface; on P > 1 ranks every
+// rank made tets (none on pipe, whose 16 leaves put every face's
+// neighbourhood across a cut), some faces waited for rank 0 because their
+// neighbourhood reached another rank's leaves, and rank 0 made every other
+// rank's tets again; each leaf has one owner, the same on every rank, and a
+// boundary leaf's owner is the rank the boundary partition sent it to.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "check/validate.hpp"
+#include "core/error.hpp"
+#include "io/mesh_file.hpp"
+#include "parallel/comm.hpp"
+#include "partition/boundary_partition.hpp"
+#include "partition/leaf_owners.hpp"
+#include "pipeline/mesh_command.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+struct Case {
+  const char* surface;
+  bool every_rank_removes;  // false for a body so small that every face's neighbourhood crosses a cut
+};
+
+class DistributedRemovals : public testing::TestWithParam<Case> {};
+
+TEST_P(DistributedRemovals, EveryRankMakesTetsAndTheMeshIsValid) {
+  const Comm comm = Comm::world();
+  const Log log(comm.rank(), false, false);
+  const std::string dir = "/tmp/partet_mpi_removals_" + std::to_string(comm.size());
+  if (comm.rank() == 0) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  comm.barrier();
+  MeshOptions o;
+  o.input = test::data_path(GetParam().surface);
+  o.output = dir + "/mesh.vtu";
+  o.report = dir + "/report.json";
+  o.quiet = true;
+  ASSERT_EQ(run_mesh(o, comm, log), kExitOk);
+  if (comm.rank() != 0) return;
+  const SurfaceMesh surface = read_surface_file(o.input);
+  const ValidationResult v = validate_mesh(read_volume_file(o.output), &surface);
+  EXPECT_TRUE(v.valid) << format_text(v);
+  const nlohmann::json report = nlohmann::json::parse(test::read_text(o.report));
+  const auto& steps = report["steps"];
+  const auto step = std::find_if(steps.begin(), steps.end(), [](const auto& s) { return s["name"] == "face removals (tree)"; });
+  ASSERT_NE(step, steps.end());
+  const auto& c = (*step)["counts"];
+  if (comm.size() == 1) {
+    EXPECT_FALSE(c.contains("tets per rank"));
+    return;
+  }
+  const std::vector<int64_t> per_rank = c["tets per rank"].get<std::vector<int64_t>>();
+  ASSERT_EQ(per_rank.size(), static_cast<size_t>(comm.size()));
+  for (int64_t tets : per_rank) EXPECT_EQ(tets > 0, GetParam().every_rank_removes);
+  EXPECT_EQ(c["tets replayed"].get<int64_t>(), std::accumulate(per_rank.begin() + 1, per_rank.end(), int64_t{0}));
+  EXPECT_EQ(c["tets"].get<int64_t>(),
+            std::accumulate(per_rank.begin(), per_rank.end(), int64_t{0}) + c["tets on rank 0 after"].get<int64_t>());
+  const std::vector<int64_t> foreign = c["foreign faces per rank"].get<std::vector<int64_t>>();
+  EXPECT_GT(std::accumulate(foreign.begin(), foreign.end(), int64_t{0}), 0);
+  if (!GetParam().every_rank_removes) {
+    EXPECT_EQ(c["tets replayed"].get<int64_t>(), 0);
+  }
+  EXPECT_GT(c["tets on rank 0 after"].get<int64_t>(), 0);
+}
+
+// A level-2 tree (64 leaves) on every rank: leaves 0-31 are "boundary"
+// leaves, leaf i held by rank i mod P; the others are placed by separators
+// cut over their centres (held by rank 0).
+TEST(LeafOwnersMpi, BoundaryLeavesKeepTheirRankAndTheRestFollowTheSeparators) {
+  const Comm comm = Comm::world();
+  const int p = comm.size();
+  LinearOctree tree;
+  const uint32_t e = octant_edge(2);
+  for (uint32_t z = 0; z < 4; ++z)
+    for (uint32_t y = 0; y < 4; ++y)
+      for (uint32_t x = 0; x < 4; ++x) tree.key.push_back(morton_key(x * e, y * e, z * e));
+  std::sort(tree.key.begin(), tree.key.end());
+  tree.level.assign(64, 2);
+  tree.cls.assign(64, LeafClass::kInterior);
+  tree.owner.assign(64, -1);
+  const RootCube root;
+  LinearOctree own;
+  std::vector<double> centres, weights;
+  for (size_t i = 0; i < 64; ++i) {
+    if (i < 32 && static_cast<int>(i % static_cast<size_t>(p)) == comm.rank()) own.key.push_back(tree.key[i]);
+    if (i >= 32 && comm.rank() == 0) {
+      double c[3];
+      octant_centre(root, tree.key[i], 2, c);
+      centres.insert(centres.end(), c, c + 3);
+      weights.push_back(1);
+    }
+  }
+  const PartitionResult cut = partition_points(comm, centres.data(), weights.data(), weights.size());
+  set_leaf_owners(comm, own, cut.separators, root, tree);
+  for (size_t i = 0; i < 64; ++i) {
+    if (i < 32) {
+      EXPECT_EQ(tree.owner[i], static_cast<int32_t>(i % static_cast<size_t>(p))) << i;
+    } else {
+      double c[3];
+      octant_centre(root, tree.key[i], 2, c);
+      EXPECT_EQ(tree.owner[i], rank_of_point(cut.separators, p, c)) << i;
+    }
+  }
+  // Rank 0's leaves among 32-63 are where the partition sent their centres.
+  if (comm.rank() == 0) {
+    for (size_t i = 32; i < 64; ++i) EXPECT_EQ(tree.owner[i], cut.destination[i - 32]) << i;
+  }
+  // The same owners on every rank.
+  std::vector<int64_t> sum(64), mine(64);
+  for (size_t i = 0; i < 64; ++i) sum[i] = mine[i] = tree.owner[i];
+  comm.sum(sum.data(), sum.size());
+  for (size_t i = 0; i < 64; ++i) EXPECT_EQ(sum[i], mine[i] * p) << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, DistributedRemovals,
+                         testing::Values(Case{"good/sphere966.off", true}, Case{"good/eight.off", true},
+                                         Case{"good/pipe.off", false}),
+                         [](const testing::TestParamInfo<Case>& info) {
+                           const std::string name = info.param.surface;
+                           return name.substr(5, name.find('.') - 5);
+                         });
+
+}  // namespace
+}  // namespace partet
