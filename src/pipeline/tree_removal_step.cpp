@@ -62,8 +62,9 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
     const size_t core_tets = mesh.num_tets();
     Stopwatch clock;
+    // Rank 0 keeps what its passes learnt for the passes that finish.
     RemovalMemo rank_memo;
-    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), rank_memo);
+    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), root_rank ? memo : rank_memo);
     const double rank_s = clock.wall();
     c["tets per rank"] = comm.all_gather(static_cast<int64_t>(mine.tets));
     c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
