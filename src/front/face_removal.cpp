@@ -432,21 +432,6 @@ void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f
   mark_done_leaves(front, tree, shrunk);
 }
 
-size_t replay_removal_tets(Front& front, LinearOctree& tree, TetMesh& out, const std::vector<uint32_t>& tets) {
-  std::vector<uint32_t> added, shrunk;
-  for (size_t i = 0; i + 4 <= tets.size(); i += 4) {
-    const uint32_t* t = &tets[i];
-    const uint32_t f = front.find_face(t[0], t[1], t[2]);
-    PARTET_ASSERT(f != kNoIndex, "a replayed tet's base face is not on the front");
-    const uint32_t* g = front.face(f);
-    const bool same_side = (g[0] == t[0] && g[1] == t[1]) || (g[0] == t[1] && g[1] == t[2]) ||
-                           (g[0] == t[2] && g[1] == t[0]);
-    PARTET_ASSERT(same_side, "a replayed tet's base face is on the front the other way round");
-    make_removal_tet(front, tree, out, f, t[3], added, shrunk);
-  }
-  return tets.size() / 4;
-}
-
 void mark_done_leaves(const Front& front, LinearOctree& tree, const std::vector<uint32_t>& shrunk) {
   for (uint32_t leaf : shrunk) {
     LeafClass& cls = tree.cls[leaf];

@@ -129,13 +129,6 @@ struct RemovalCounts {
 void make_removal_tet(Front& front, LinearOctree& tree, TetMesh& out, uint32_t f, uint32_t p,
                       std::vector<uint32_t>& added, std::vector<uint32_t>& shrunk, const LeafCover* cover = nullptr);
 
-// Makes again, in order, tets that face removals made on another copy of
-// the same front (4 front vertex indices each, the base face first, as
-// make_removal_tet appends them): each base face must be alive here, with
-// the same orientation. Used on rank 0 for the tets the other ranks made
-// (pipeline/tree_removal_step.hpp); returns how many.
-size_t replay_removal_tets(Front& front, LinearOctree& tree, TetMesh& out, const std::vector<uint32_t>& tets);
-
 // Reclassifies the boundary and too-close leaves of `shrunk` whose front
 // is empty as kDone.
 void mark_done_leaves(const Front& front, LinearOctree& tree, const std::vector<uint32_t>& shrunk);

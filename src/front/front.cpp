@@ -310,6 +310,38 @@ void Front::remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std:
     if (twin != kNoIndex) close_face(twin, shrunk);
 }
 
+Front::Changes Front::changes_since(size_t slots, uint32_t first_free_vertex) const {
+  PARTET_ASSERT(slots <= alive_.size(), "changes since more face slots than the front has");
+  Changes c;
+  for (uint32_t f = 0; f < slots; ++f)
+    if (!alive_[f]) c.closed.push_back(f);
+  for (size_t f = slots; f < alive_.size(); ++f)
+    if (alive_[f]) c.added.insert(c.added.end(), &faces_[3 * f], &faces_[3 * f] + 3);
+  for (uint32_t v = first_free_vertex; v < free_.size(); ++v)
+    if (!free_[v]) c.taken.push_back(v);
+  return c;
+}
+
+void Front::merge(const Changes& changes, std::vector<uint32_t>& shrunk) {
+  ++changes_;
+  for (uint32_t f : changes.closed) {
+    PARTET_ASSERT(f < alive_.size() && alive_[f], "a merged front closes a face closed here");
+    close_face(f, shrunk);
+  }
+  for (size_t i = 0; i + 3 <= changes.added.size(); i += 3) {
+    const uint32_t* t = &changes.added[i];
+    PARTET_ASSERT(find_face(t[0], t[1], t[2]) == kNoIndex, "a merged front adds a face alive here");
+    add_face(t[0], t[1], t[2]);
+  }
+  for (uint32_t v : changes.taken) {
+    PARTET_ASSERT(v < free_.size(), "a merged front takes a vertex this front lacks");
+    if (!free_[v]) continue;  // a face added above took it over
+    free_[v] = 0;
+    --free_count_;
+    release_vertex(v, shrunk);
+  }
+}
+
 std::vector<uint32_t> Front::compact() {
   std::vector<uint32_t> new_face(alive_.size(), kNoIndex);
   uint32_t n = 0;

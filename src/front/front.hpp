@@ -149,6 +149,25 @@ class Front {
   // Removes the last vertex, which no face may have used (undoes add_vertex).
   void remove_last_vertex();
 
+  // What a copy of this front changed since the copy was made, when it had
+  // `slots` face slots and its free vertices were those from
+  // `first_free_vertex` on: the slots below `slots` it closed (ascending),
+  // the faces it added that are still alive (3 vertex indices each, in slot
+  // order) and the vertices free then and not now (ascending).
+  struct Changes {
+    std::vector<uint32_t> closed, added, taken;
+  };
+  Changes changes_since(size_t slots, uint32_t first_free_vertex) const;
+  // Takes in the changes another copy of this front made (changes_since on
+  // it, made from the same front as this one) where this front changed
+  // nothing: no face or vertex either touched. The faces closed there are
+  // closed here, the faces added there are added here (new slots, in
+  // order), and the free vertices taken there and used by no face here are
+  // taken off the front. Appends the leaves that lost a face or a vertex to
+  // `shrunk`. The alive faces, front edges and front vertices are then
+  // those of the copy's tets made again on this front (apply_tet).
+  void merge(const Changes& changes, std::vector<uint32_t>& shrunk);
+
   // Drops the closed face slots, renumbering the alive faces in their
   // order (every order by face index stays), rebuilds the leaf lists with
   // closed boxes (newest face first, as before) and gives the memory back.

@@ -34,18 +34,30 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   return n;
 }
 
-std::string tets_image(const TetMesh& mesh, size_t first_tet) {
-  const size_t n = mesh.tets.size() - 4 * first_tet;
-  std::string out(n * sizeof(uint32_t), '\0');
-  if (n > 0) std::memcpy(out.data(), &mesh.tets[4 * first_tet], out.size());
-  return out;
+void put(std::string& out, const uint32_t* data, size_t n) {
+  const uint64_t count = n;
+  out.append(reinterpret_cast<const char*>(&count), sizeof count);
+  if (n > 0) out.append(reinterpret_cast<const char*>(data), n * sizeof(uint32_t));
 }
 
-std::vector<uint32_t> image_tets(const std::string& image) {
-  PARTET_ASSERT(image.size() % (4 * sizeof(uint32_t)) == 0, "truncated tets image");
-  std::vector<uint32_t> tets(image.size() / sizeof(uint32_t));
-  if (!tets.empty()) std::memcpy(tets.data(), image.data(), image.size());
-  return tets;
+std::vector<uint32_t> get(const std::string& in, size_t& pos) {
+  uint64_t n = 0;
+  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated removal image");
+  std::memcpy(&n, in.data() + pos, sizeof n);
+  pos += sizeof n;
+  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(uint32_t), "truncated removal image");
+  std::vector<uint32_t> v(n);
+  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(uint32_t));
+  pos += n * sizeof(uint32_t);
+  return v;
+}
+
+// A rank's tets made after `first_tet` and its front's changes.
+std::string removal_image(const TetMesh& mesh, size_t first_tet, const Front::Changes& changes) {
+  std::string out;
+  put(out, mesh.tets.data() + 4 * first_tet, mesh.tets.size() - 4 * first_tet);
+  for (const std::vector<uint32_t>* v : {&changes.closed, &changes.added, &changes.taken}) put(out, v->data(), v->size());
+  return out;
 }
 
 }  // namespace
@@ -60,7 +72,8 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   if (distributed) {
     PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
     set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
-    const size_t core_tets = mesh.num_tets();
+    const size_t core_tets = mesh.num_tets(), slots = front->num_face_slots();
+    const uint32_t first_free = static_cast<uint32_t>(front->num_vertices() - initial.free_vertices);
     Stopwatch clock;
     // Rank 0 keeps what its passes learnt for the passes that finish.
     RemovalMemo rank_memo;
@@ -70,7 +83,8 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
     c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
     c["rank s per rank"] = comm.all_gather(rank_s);
-    const std::vector<std::string> images = comm.gather(tets_image(mesh, core_tets), 0);
+    const std::vector<std::string> images = comm.gather(
+        root_rank ? std::string() : removal_image(mesh, core_tets, front->changes_since(slots, first_free)), 0);
     tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.tets)));
     passes = mine.passes;
     checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.checks)));
@@ -80,11 +94,22 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
       mesh = TetMesh{};
       return ojson::object();
     }
+    // The other ranks' tets join the mesh, and their changes rank 0's front.
     clock.restart();
-    size_t replayed = 0;
-    for (size_t r = 1; r < images.size(); ++r) replayed += replay_removal_tets(*front, tree, mesh, image_tets(images[r]));
-    c["tets replayed"] = replayed;
-    c["replay s"] = clock.wall();
+    std::vector<uint32_t> shrunk;
+    for (size_t r = 1; r < images.size(); ++r) {
+      size_t pos = 0;
+      const std::vector<uint32_t> tets = get(images[r], pos);
+      mesh.tets.insert(mesh.tets.end(), tets.begin(), tets.end());
+      Front::Changes changes;
+      changes.closed = get(images[r], pos);
+      changes.added = get(images[r], pos);
+      changes.taken = get(images[r], pos);
+      shrunk.clear();
+      front->merge(changes, shrunk);
+      mark_done_leaves(*front, tree, shrunk);
+    }
+    c["merge s"] = clock.wall();
     std::fill(tree.owner.begin(), tree.owner.end(), 0);
   }
   const RemovalCounts n = two_passes(*front, tree, root, mesh, 0, memo);

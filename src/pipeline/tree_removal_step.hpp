@@ -8,12 +8,14 @@
 //    rank runs the same two passes on its copy, making only the removals
 //    whose neighbourhood leaves are all its own (removals never
 //    communicate), so two ranks' tets never touch one leaf and are valid
-//    together. Rank 0 makes the other ranks' tets again on its front, in
-//    rank order (replay_removal_tets), takes every leaf as its own and runs
-//    the two passes over what is left: the faces near the cuts between the
-//    ranks' parts and those no rank could remove. This stands in for the
-//    paper's repartitioning of the face, edge and vertex interfaces (steps
-//    5-9), which would keep the work on the ranks.
+//    together. Rank 0 appends the other ranks' tets to its mesh and merges
+//    their fronts' changes into its front, in rank order (Front::merge:
+//    the front their tets would give if made again here), takes every leaf
+//    as its own and runs the two passes over what is left: the faces near
+//    the cuts between the ranks' parts and those no rank could remove.
+//    This stands in for the paper's repartitioning of the face, edge and
+//    vertex interfaces (steps 5-9), which would keep the work on the
+//    ranks.
 // Afterwards, on rank 0, the gap vertices no tet took are dropped and the
 // front is compacted; the other ranks end with no front and an empty mesh.
 #pragma once

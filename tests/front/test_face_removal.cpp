@@ -5,12 +5,14 @@
 // empty), which the tree-less removals complete; faces near leaves owned by another rank wait, and a later call
 // with the leaves back on this rank continues the same front; a memo of
 // failures spares a later call the faces whose neighbourhood is unchanged;
+// two ranks' copies of a front merge into what replaying their tets gives;
 // compacting the front between calls changes no tet; a failed removal
 // whose blocker is still there (what lets a call skip rechecking it) still
 // fails on the evolving front.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -20,6 +22,7 @@
 #include "check/validate.hpp"
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
+#include "front/gap_vertices.hpp"
 #include "front/initial_front.hpp"
 #include "front/removal_checks.hpp"
 #include "front/treeless_removal.hpp"
@@ -39,6 +42,7 @@ namespace {
 struct Meshing {
   SurfaceMesh surface;
   RootCube root;
+  VertexSizing sizing;
   LinearOctree tree;
   TemplateCore core;
   InitialFront initial;
@@ -51,7 +55,8 @@ void prepare(Meshing& m, SurfaceMesh surface, double size_factor) {
   m.root = make_root_cube(summary.bbox);
   SizingOptions sizing_options;
   sizing_options.size_factor = size_factor;
-  VertexSizing sizing = size_vertices(m.surface, m.root, sizing_options);
+  m.sizing = size_vertices(m.surface, m.root, sizing_options);
+  const VertexSizing& sizing = m.sizing;
   m.tree = build_octree(sizing.grid, sizing.level);
   refine_for_triangles(m.tree, m.surface, m.root, sizing.level);
   balance_octree(m.tree);
@@ -190,6 +195,83 @@ TEST(FrontRemoval, ForeignLeavesWait) {
   EXPECT_EQ(more.foreign_faces, 0u);
   EXPECT_LT(more.faces_left, n.faces_left);
   expect_valid(m, out, more.faces_left, "all owned");
+}
+
+// Alive faces rotated to start at their smallest vertex (orientation kept),
+// sorted; the front edges' use counts; the vertices' use counts.
+struct FrontState {
+  std::vector<std::array<uint32_t, 3>> faces;
+  std::vector<uint32_t> edge_uses, vertex_uses;
+  size_t free = 0;
+  bool operator==(const FrontState&) const = default;
+};
+
+FrontState state_of(const Front& front) {
+  FrontState s;
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+    if (!front.alive(f)) continue;
+    std::array<uint32_t, 3> t = {front.face(f)[0], front.face(f)[1], front.face(f)[2]};
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    s.faces.push_back(t);
+  }
+  std::sort(s.faces.begin(), s.faces.end());
+  for (const auto& t : s.faces)
+    for (int k = 0; k < 3; ++k) s.edge_uses.push_back(front.edge_uses(t[k], t[(k + 1) % 3]));
+  for (uint32_t v = 0; v < front.num_vertices(); ++v) s.vertex_uses.push_back(front.vertex_uses(v));
+  s.free = front.num_free_vertices();
+  return s;
+}
+
+// Two copies of one front (with gap vertices), the lower half of the
+// leaves rank 0's and the upper half rank 1's, each removing faces on its
+// own: rank 1's changes merged into rank 0's front give the front that
+// making rank 1's tets again gives, and the front then closes to a valid
+// mesh with both ranks' tets.
+TEST(FrontRemoval, RanksFrontChangesMergeAsTheirTetsReplay) {
+  Meshing m;
+  prepare(m, read_surface_file(data_path("good/sphere966.off")), 1);
+  const GapVertices gap = gap_vertices(m.tree, m.root, m.surface, m.sizing.size, 0.5);
+  ASSERT_GT(gap.size(), 0u);
+  add_free_vertices(m.initial, m.tree, gap.xyz, gap.global_ids, gap.leaf);
+  for (size_t leaf = 0; leaf < m.tree.size(); ++leaf) {
+    uint32_t x, y, z;
+    m.tree.anchor(leaf, x, y, z);
+    if (z >= kGridSize / 2) m.tree.owner[leaf] = 1;
+  }
+  LinearOctree tree0 = m.tree, tree1 = m.tree;
+  Front front0(m.initial, tree0, m.root), front1(m.initial, tree1, m.root);
+  const size_t slots = front0.num_face_slots();
+  const uint32_t first_free = static_cast<uint32_t>(front0.num_vertices() - m.initial.free_vertices);
+  TetMesh out0 = m.core.mesh, out1 = m.core.mesh;
+  const size_t core_tets = out0.num_tets();
+  RemovalOptions rank1;
+  rank1.rank = 1;
+  ASSERT_GT(remove_faces_tree_supported(front0, tree0, m.root, out0).tets, 0u);
+  ASSERT_GT(remove_faces_tree_supported(front1, tree1, m.root, out1, rank1).tets, 0u);
+
+  Front replayed = front0;
+  LinearOctree tree_replayed = tree0;
+  std::vector<uint32_t> added, shrunk;
+  for (size_t t = core_tets; t < out1.num_tets(); ++t) {
+    const uint32_t* v = &out1.tets[4 * t];
+    const uint32_t f = replayed.find_face(v[0], v[1], v[2]);
+    ASSERT_NE(f, kNoIndex) << t;
+    make_removal_tet(replayed, tree_replayed, out0, f, v[3], added, shrunk);
+  }
+  const Front::Changes changes = front1.changes_since(slots, first_free);
+  EXPECT_FALSE(changes.closed.empty());
+  EXPECT_FALSE(changes.added.empty());
+  EXPECT_FALSE(changes.taken.empty());
+  shrunk.clear();
+  front0.merge(changes, shrunk);
+  EXPECT_TRUE(state_of(front0) == state_of(replayed));
+
+  // out0 now holds rank 0's tets and rank 1's (made again above).
+  for (int32_t& owner : tree0.owner) owner = 0;
+  mark_done_leaves(front0, tree0, shrunk);
+  const RemovalCounts rest = remove_faces_tree_supported(front0, tree0, m.root, out0);
+  EXPECT_GT(rest.tets, 0u);
+  expect_valid(m, out0, rest.faces_left, "merged");
 }
 
 TEST(FrontRemoval, MemoSkipsUnchangedNeighbourhoods) {
