@@ -11,8 +11,8 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "optimize/mesh_parts.hpp"
+#include "parallel/mesh_scatter.hpp"
 #include "parallel/write_parts.hpp"
-#include "partition/recursive_bisection.hpp"
 
 namespace partet {
 
@@ -63,43 +63,6 @@ OptimizeStats sum_over_ranks(const Comm& comm, const OptimizeStats& x) {
   out.measure_seconds = comm.sum(x.measure_seconds);
   out.passes = x.passes;
   return out;
-}
-
-// Rank 0: the part of each tet, by recursive inertial bisection of the
-// centroids; collective (the other ranks pass no points).
-std::vector<int32_t> partition_tets(const Comm& comm, const TetMesh& mesh) {
-  std::vector<double> centroids;
-  centroids.reserve(3 * mesh.num_tets());
-  for (size_t t = 0; t < mesh.num_tets(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      double sum = 0;
-      for (int i = 0; i < 4; ++i) sum += mesh.point(mesh.tets[4 * t + static_cast<size_t>(i)])[k];
-      centroids.push_back(0.25 * sum);
-    }
-  const std::vector<double> weight(mesh.num_tets(), 1.0);
-  return partition_points(comm, centroids.data(), weight.data(), mesh.num_tets(), BisectionMethod::kRib)
-      .destination;
-}
-
-// Rank 0 sends part r (its mesh and cut flags) to rank r; every rank
-// returns its own (`whole` is left empty).
-MeshPart scatter_parts(const Comm& comm, const std::vector<MeshPart>& parts) {
-  std::vector<char> send;
-  std::vector<int64_t> send_bytes(static_cast<size_t>(comm.size()), 0);
-  for (size_t r = 0; r < parts.size(); ++r) {
-    const std::string bytes = serialize_part(parts[r].mesh);
-    send.insert(send.end(), bytes.begin(), bytes.end());
-    send.insert(send.end(), parts[r].on_cut.begin(), parts[r].on_cut.end());
-    send_bytes[r] = static_cast<int64_t>(bytes.size() + parts[r].on_cut.size());
-  }
-  std::vector<int64_t> recv_bytes;
-  const std::vector<char> recv = comm.all_to_all(send, send_bytes, recv_bytes);
-  MeshPart own;
-  own.mesh = deserialize_part(std::string(recv.begin(), recv.end()));
-  const size_t flags = own.mesh.num_vertices();
-  PARTET_ASSERT(recv.size() >= flags, "truncated part");
-  own.on_cut.assign(recv.end() - static_cast<ptrdiff_t>(flags), recv.end());
-  return own;
 }
 
 // The band pass on rank 0 (see the header, step 4): returns its stats.

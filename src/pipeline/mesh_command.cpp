@@ -36,6 +36,7 @@
 #include "octree/sizing.hpp"
 #include "optimize/optimize.hpp"
 #include "parallel/collective_step.hpp"
+#include "parallel/mesh_scatter.hpp"
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/cone_alternative.hpp"
@@ -616,10 +617,18 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
         });
       }
       report.run_step("write mesh", [&] {
+        // On P > 1 ranks a .pvtu is written in balanced pieces, one per rank.
+        const bool pieces = distributed && file_extension(options.output) == "pvtu";
+        if (pieces) s.mesh = distribute_mesh(comm, s.mesh);
         write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
         ojson c;
-        c["tets"] = s.mesh.num_tets();
-        c["vertices"] = s.mesh.num_vertices();
+        if (pieces) {
+          c["tets"] = comm.sum(static_cast<int64_t>(s.mesh.num_tets()));
+          c["tets per rank"] = comm.all_gather(static_cast<int64_t>(s.mesh.num_tets()));
+        } else {
+          c["tets"] = s.mesh.num_tets();
+          c["vertices"] = s.mesh.num_vertices();
+        }
         c["file"] = options.output;
         return c;
       });

@@ -3,8 +3,8 @@
 // surface, its boundary is the same triangles on the same points, it is
 // better than before (smallest angle, share under 10 degrees, mean radius
 // ratio), every rank had a part, and a second run gives the same mesh;
-// the whole command on P ranks reports the parts and the band and writes
-// the same file twice.
+// the whole command on P ranks reports the parts and the band, writes the
+// same file twice, and writes a .pvtu as one balanced piece per rank.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -146,6 +146,33 @@ TEST_P(DistributedOptimize, TheCommandReportsThePartsAndWritesTheSameMeshTwice) 
   const SurfaceMesh surface = read_surface_file(test::data_path(GetParam()));
   const ValidationResult v = validate_mesh(read_volume_file(dir + "/a.vtu"), &surface);
   EXPECT_TRUE(v.valid) << format_text(v);
+}
+
+// A .pvtu is written in one piece per rank, of equal tet counts (within
+// one), which together are the mesh the one-file output holds.
+TEST_P(DistributedOptimize, PvtuPiecesAreTheRanksBalancedParts) {
+  const Comm comm = Comm::world();
+  const Log log(comm.rank(), false, false);
+  const std::string dir = shared_dir(comm, "optimize_pieces");
+  ASSERT_EQ(run_mesh(mesh_options(GetParam(), dir + "/one.vtu"), comm, log), kExitOk);
+  ASSERT_EQ(run_mesh(mesh_options(GetParam(), dir + "/pieces.pvtu"), comm, log), kExitOk);
+  if (comm.rank() != 0) return;
+  const TetMesh one = read_volume_file(dir + "/one.vtu");
+  const TetMesh pieces = read_volume_file(dir + "/pieces.pvtu");
+  EXPECT_EQ(pieces.num_tets(), one.num_tets());
+  EXPECT_EQ(boundary_points(pieces), boundary_points(one));
+  const SurfaceMesh surface = read_surface_file(test::data_path(GetParam()));
+  const ValidationResult v = validate_mesh(pieces, &surface);
+  EXPECT_TRUE(v.valid) << format_text(v);
+  size_t fewest = one.num_tets(), most = 0;
+  for (int r = 0; r < comm.size(); ++r) {
+    const TetMesh piece = read_volume_file(pvtu_piece_path(dir + "/pieces.pvtu", r));
+    fewest = std::min(fewest, piece.num_tets());
+    most = std::max(most, piece.num_tets());
+    // Pieces of several ranks number their vertices by the whole mesh's.
+    EXPECT_EQ(piece.global_ids.size(), comm.size() > 1 ? piece.num_vertices() : 0) << r;
+  }
+  EXPECT_LE(most - fewest, 1u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, DistributedOptimize, testing::Values("good/eight.off", "good/pipe.off"),
