@@ -18,6 +18,11 @@
 //    ranks.
 // Afterwards, on rank 0, the gap vertices no tet took are dropped and the
 // front is compacted; the other ranks end with no front and an empty mesh.
+// The counts: the tets, faces left, passes and checks of the step; on P > 1
+// ranks also, per rank, the tets its passes made, the faces its copy had
+// left and how many of those it skipped for a leaf of another rank (the
+// faces of the other ranks' leaves among them) and its passes' wall time;
+// the merge's time on rank 0 and the tets its finishing passes made.
 #pragma once
 
 #include <memory>
