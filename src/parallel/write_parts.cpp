@@ -6,49 +6,28 @@
 #include "core/error.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_formats.hpp"
+#include "parallel/byte_image.hpp"
 #include "parallel/collective_step.hpp"
 
 namespace partet {
 
-namespace {
-
-template <class T>
-void put(std::string& out, const std::vector<T>& v) {
-  uint64_t n = v.size();
-  out.append(reinterpret_cast<const char*>(&n), sizeof n);
-  if (n > 0) out.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
-}
-
-template <class T>
-void get(const std::string& in, size_t& pos, std::vector<T>& v) {
-  uint64_t n = 0;
-  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated part image");
-  std::memcpy(&n, in.data() + pos, sizeof n);
-  pos += sizeof n;
-  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(T), "truncated part image");
-  v.resize(n);
-  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(T));
-  pos += n * sizeof(T);
-}
-
-}  // namespace
 
 std::string serialize_part(const TetMesh& part) {
   std::string out;
-  put(out, part.xyz);
-  put(out, part.tets);
-  put(out, part.tris);
-  put(out, part.global_ids);
+  put_array(out, part.xyz);
+  put_array(out, part.tets);
+  put_array(out, part.tris);
+  put_array(out, part.global_ids);
   return out;
 }
 
 TetMesh deserialize_part(const std::string& bytes) {
   TetMesh m;
   size_t pos = 0;
-  get(bytes, pos, m.xyz);
-  get(bytes, pos, m.tets);
-  get(bytes, pos, m.tris);
-  get(bytes, pos, m.global_ids);
+  m.xyz = get_array<double>(bytes, pos);
+  m.tets = get_array<uint32_t>(bytes, pos);
+  m.tris = get_array<uint32_t>(bytes, pos);
+  m.global_ids = get_array<uint64_t>(bytes, pos);
   return m;
 }
 

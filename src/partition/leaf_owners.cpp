@@ -2,10 +2,10 @@
 #include "partition/leaf_owners.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 
 #include "core/error.hpp"
+#include "parallel/byte_image.hpp"
 #include "partition/boundary_partition.hpp"
 
 namespace partet {
@@ -28,32 +28,18 @@ int rank_of_point(const std::vector<Separator>& separators, int ranks, const dou
 
 void set_leaf_owners(const Comm& comm, const LinearOctree& own, const std::vector<Separator>& separators,
                      const RootCube& root, LinearOctree& tree) {
-  std::string keys(own.key.size() * sizeof(uint64_t), '\0');
-  if (!own.key.empty()) std::memcpy(keys.data(), own.key.data(), keys.size());
+  // Every rank's boundary leaf keys, on every rank.
+  std::string keys;
+  put_array(keys, own.key);
   std::string all;
-  std::vector<std::string> per_rank = comm.gather(keys, 0);
-  if (comm.rank() == 0)
-    for (const std::string& k : per_rank) {
-      const uint64_t n = k.size();
-      all.append(reinterpret_cast<const char*>(&n), sizeof n);
-      all += k;
-    }
+  const std::vector<std::string> per_rank = comm.gather(keys, 0);
+  for (const std::string& k : per_rank) all += k;
   comm.broadcast(all, 0);
   // (key, rank) of every boundary leaf, sorted by key.
   std::vector<std::pair<uint64_t, int32_t>> boundary;
   size_t pos = 0;
-  for (int32_t r = 0; r < comm.size(); ++r) {
-    uint64_t n = 0;
-    PARTET_ASSERT(pos + sizeof n <= all.size(), "truncated leaf owners");
-    std::memcpy(&n, all.data() + pos, sizeof n);
-    pos += sizeof n;
-    for (size_t i = 0; i < n / sizeof(uint64_t); ++i) {
-      uint64_t key = 0;
-      std::memcpy(&key, all.data() + pos + i * sizeof key, sizeof key);
-      boundary.emplace_back(key, r);
-    }
-    pos += n;
-  }
+  for (int32_t r = 0; r < comm.size(); ++r)
+    for (uint64_t key : get_array<uint64_t>(all, pos)) boundary.emplace_back(key, r);
   std::sort(boundary.begin(), boundary.end());
   tree.owner.resize(tree.size());
   for (size_t i = 0; i < tree.size(); ++i) {

@@ -4,11 +4,11 @@
 #include "pipeline/tree_removal_step.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 
 #include "core/error.hpp"
 #include "core/timer.hpp"
+#include "parallel/byte_image.hpp"
 #include "partition/leaf_owners.hpp"
 
 namespace partet {
@@ -34,29 +34,11 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   return n;
 }
 
-void put(std::string& out, const uint32_t* data, size_t n) {
-  const uint64_t count = n;
-  out.append(reinterpret_cast<const char*>(&count), sizeof count);
-  if (n > 0) out.append(reinterpret_cast<const char*>(data), n * sizeof(uint32_t));
-}
-
-std::vector<uint32_t> get(const std::string& in, size_t& pos) {
-  uint64_t n = 0;
-  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated removal image");
-  std::memcpy(&n, in.data() + pos, sizeof n);
-  pos += sizeof n;
-  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(uint32_t), "truncated removal image");
-  std::vector<uint32_t> v(n);
-  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(uint32_t));
-  pos += n * sizeof(uint32_t);
-  return v;
-}
-
 // A rank's tets made after `first_tet` and its front's changes.
 std::string removal_image(const TetMesh& mesh, size_t first_tet, const Front::Changes& changes) {
   std::string out;
-  put(out, mesh.tets.data() + 4 * first_tet, mesh.tets.size() - 4 * first_tet);
-  for (const std::vector<uint32_t>* v : {&changes.closed, &changes.added, &changes.taken}) put(out, v->data(), v->size());
+  put_array(out, mesh.tets.data() + 4 * first_tet, mesh.tets.size() - 4 * first_tet);
+  for (const std::vector<uint32_t>* v : {&changes.closed, &changes.added, &changes.taken}) put_array(out, *v);
   return out;
 }
 
@@ -99,12 +81,12 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     std::vector<uint32_t> shrunk;
     for (size_t r = 1; r < images.size(); ++r) {
       size_t pos = 0;
-      const std::vector<uint32_t> tets = get(images[r], pos);
+      const std::vector<uint32_t> tets = get_array<uint32_t>(images[r], pos);
       mesh.tets.insert(mesh.tets.end(), tets.begin(), tets.end());
       Front::Changes changes;
-      changes.closed = get(images[r], pos);
-      changes.added = get(images[r], pos);
-      changes.taken = get(images[r], pos);
+      changes.closed = get_array<uint32_t>(images[r], pos);
+      changes.added = get_array<uint32_t>(images[r], pos);
+      changes.taken = get_array<uint32_t>(images[r], pos);
       shrunk.clear();
       front->merge(changes, shrunk);
       mark_done_leaves(*front, tree, shrunk);

@@ -8,30 +8,11 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "parallel/byte_image.hpp"
 #include "templates/face_rule.hpp"
 
 namespace partet {
 namespace {
-
-template <class T>
-void put(std::string& out, const std::vector<T>& v) {
-  const uint64_t n = v.size();
-  out.append(reinterpret_cast<const char*>(&n), sizeof n);
-  if (n > 0) out.append(reinterpret_cast<const char*>(v.data()), n * sizeof(T));
-}
-
-template <class T>
-std::vector<T> get(const std::string& in, size_t& pos) {
-  uint64_t n = 0;
-  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated core part");
-  std::memcpy(&n, in.data() + pos, sizeof n);
-  pos += sizeof n;
-  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(T), "truncated core part");
-  std::vector<T> v(n);
-  if (n > 0) std::memcpy(v.data(), in.data() + pos, n * sizeof(T));
-  pos += n * sizeof(T);
-  return v;
-}
 
 // This rank's leaves, their face cases and tet counts, and its core part.
 std::string part_image(const LinearOctree& view, const TemplateCore& part, int rank) {
@@ -48,16 +29,16 @@ std::string part_image(const LinearOctree& view, const TemplateCore& part, int r
     tets_of_leaf.push_back(static_cast<uint32_t>(part.leaf_first_tet[i + 1] - part.leaf_first_tet[i]));
   }
   std::string out;
-  put(out, key);
-  put(out, level);
-  put(out, cls);
-  put(out, face_case);
-  put(out, tets_of_leaf);
-  put(out, part.mesh.xyz);
-  put(out, part.mesh.tets);
-  put(out, part.mesh.global_ids);
+  put_array(out, key);
+  put_array(out, level);
+  put_array(out, cls);
+  put_array(out, face_case);
+  put_array(out, tets_of_leaf);
+  put_array(out, part.mesh.xyz);
+  put_array(out, part.mesh.tets);
+  put_array(out, part.mesh.global_ids);
   const std::vector<uint64_t> templated{part.leaves_templated};
-  put(out, templated);
+  put_array(out, templated);
   return out;
 }
 
@@ -74,12 +55,12 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
     if (comm.rank() == 0) {
       std::vector<uint64_t> sizes;
       for (const std::string& image : images) sizes.push_back(image.size());
-      put(all, sizes);
+      put_array(all, sizes);
       for (const std::string& image : images) all += image;
     }
     comm.broadcast(all, 0);
     size_t pos = 0;
-    const std::vector<uint64_t> sizes = get<uint64_t>(all, pos);
+    const std::vector<uint64_t> sizes = get_array<uint64_t>(all, pos);
     images.clear();
     for (uint64_t n : sizes) {
       PARTET_ASSERT(pos + n <= all.size(), "truncated gathered core");
@@ -99,15 +80,15 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
   for (size_t r = 0; r < images.size(); ++r) {
     size_t pos = 0;
     const std::string& image = images[r];
-    for (uint64_t k : get<uint64_t>(image, pos)) tree.key.push_back(k);
-    for (uint8_t l : get<uint8_t>(image, pos)) tree.level.push_back(l);
-    for (LeafClass c : get<LeafClass>(image, pos)) tree.cls.push_back(c);
-    for (uint8_t c : get<uint8_t>(image, pos)) core.face_case.push_back(c);
-    for (uint32_t n : get<uint32_t>(image, pos)) tets_of_leaf.push_back(n);
-    parts[r].xyz = get<double>(image, pos);
-    parts[r].tets = get<uint32_t>(image, pos);
-    parts[r].ids = get<uint64_t>(image, pos);
-    core.leaves_templated += get<uint64_t>(image, pos).at(0);
+    for (uint64_t k : get_array<uint64_t>(image, pos)) tree.key.push_back(k);
+    for (uint8_t l : get_array<uint8_t>(image, pos)) tree.level.push_back(l);
+    for (LeafClass c : get_array<LeafClass>(image, pos)) tree.cls.push_back(c);
+    for (uint8_t c : get_array<uint8_t>(image, pos)) core.face_case.push_back(c);
+    for (uint32_t n : get_array<uint32_t>(image, pos)) tets_of_leaf.push_back(n);
+    parts[r].xyz = get_array<double>(image, pos);
+    parts[r].tets = get_array<uint32_t>(image, pos);
+    parts[r].ids = get_array<uint64_t>(image, pos);
+    core.leaves_templated += get_array<uint64_t>(image, pos).at(0);
   }
   tree.owner.assign(tree.size(), 0);
   PARTET_ASSERT(std::is_sorted(tree.key.begin(), tree.key.end()), "gathered leaves out of order");
