@@ -1,4 +1,4 @@
-// split_mesh, join_parts and cut_band (see mesh_parts.hpp).
+// split_mesh, join_parts, cut_vertices and band_around (see mesh_parts.hpp).
 #include "optimize/mesh_parts.hpp"
 
 #include <algorithm>
@@ -17,37 +17,24 @@ constexpr int32_t kNoPart = -2;  // no tet seen yet (-1: a tet in no part)
 std::vector<MeshPart> split_mesh(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet, int parts) {
   PARTET_ASSERT(part_of_tet.size() == mesh.num_tets(), "split_mesh: one part per tet");
   std::vector<MeshPart> out(static_cast<size_t>(std::max(parts, 0)));
-  // A vertex is on a cut when tets of two parts use it, or a tet of a part
-  // and one in none.
-  std::vector<uint8_t> cut(mesh.num_vertices(), 0);
-  {
-    std::vector<int32_t> first(mesh.num_vertices(), kNoPart);
-    for (size_t t = 0; t < mesh.num_tets(); ++t) {
-      const int32_t p = part_of_tet[t] < 0 ? -1 : part_of_tet[t];
-      for (int i = 0; i < 4; ++i) {
-        const uint32_t v = mesh.tets[4 * t + static_cast<size_t>(i)];
-        if (first[v] == kNoPart)
-          first[v] = p;
-        else if (first[v] != p)
-          cut[v] = 1;
-      }
-    }
-  }
+  const std::vector<uint8_t> cut = cut_vertices(mesh, part_of_tet);
+  // The tets of each part, in tet order.
+  std::vector<std::vector<uint32_t>> tets_of(out.size());
+  for (uint32_t t = 0; t < mesh.num_tets(); ++t)
+    if (part_of_tet[t] >= 0 && part_of_tet[t] < parts) tets_of[static_cast<size_t>(part_of_tet[t])].push_back(t);
   // Per vertex, its index in the part being built (a stamp per part).
   std::vector<uint32_t> local(mesh.num_vertices(), kUnset);
   std::vector<int32_t> stamp(mesh.num_vertices(), -1);
-  for (int p = 0; p < parts; ++p) {
-    MeshPart& part = out[static_cast<size_t>(p)];
-    for (size_t t = 0; t < mesh.num_tets(); ++t) {
-      if (part_of_tet[t] != p) continue;
+  for (size_t p = 0; p < out.size(); ++p) {
+    MeshPart& part = out[p];
+    for (uint32_t t : tets_of[p])
       for (int i = 0; i < 4; ++i) {
-        const uint32_t v = mesh.tets[4 * t + static_cast<size_t>(i)];
-        if (stamp[v] != p) {
-          stamp[v] = p;
+        const uint32_t v = mesh.tets[4 * size_t{t} + static_cast<size_t>(i)];
+        if (stamp[v] != static_cast<int32_t>(p)) {
+          stamp[v] = static_cast<int32_t>(p);
           part.whole.push_back(v);
         }
       }
-    }
     std::sort(part.whole.begin(), part.whole.end());
     part.mesh.xyz.reserve(3 * part.whole.size());
     for (uint32_t i = 0; i < part.whole.size(); ++i) {
@@ -56,9 +43,9 @@ std::vector<MeshPart> split_mesh(const TetMesh& mesh, const std::vector<int32_t>
       part.mesh.xyz.insert(part.mesh.xyz.end(), mesh.point(v), mesh.point(v) + 3);
       part.on_cut.push_back(cut[v]);
     }
-    for (size_t t = 0; t < mesh.num_tets(); ++t)
-      if (part_of_tet[t] == p)
-        for (int i = 0; i < 4; ++i) part.mesh.tets.push_back(local[mesh.tets[4 * t + static_cast<size_t>(i)]]);
+    part.mesh.tets.reserve(4 * tets_of[p].size());
+    for (uint32_t t : tets_of[p])
+      for (int i = 0; i < 4; ++i) part.mesh.tets.push_back(local[mesh.tets[4 * size_t{t} + static_cast<size_t>(i)]]);
   }
   return out;
 }
@@ -94,16 +81,15 @@ std::vector<int32_t> join_parts(TetMesh& mesh, const std::vector<int32_t>& part_
 
 std::vector<uint8_t> cut_vertices(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet) {
   PARTET_ASSERT(part_of_tet.size() == mesh.num_tets(), "cut_vertices: one part per tet");
-  std::vector<int32_t> first_part(mesh.num_vertices(), -1);
+  std::vector<int32_t> first(mesh.num_vertices(), kNoPart);
   std::vector<uint8_t> cut(mesh.num_vertices(), 0);
   for (size_t t = 0; t < mesh.num_tets(); ++t) {
-    const int32_t p = part_of_tet[t];
-    if (p < 0) continue;
+    const int32_t p = std::max(part_of_tet[t], int32_t{-1});
     for (int i = 0; i < 4; ++i) {
       const uint32_t v = mesh.tets[4 * t + static_cast<size_t>(i)];
-      if (first_part[v] < 0)
-        first_part[v] = p;
-      else if (first_part[v] != p)
+      if (first[v] == kNoPart)
+        first[v] = p;
+      else if (first[v] != p)
         cut[v] = 1;
     }
   }

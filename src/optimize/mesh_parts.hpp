@@ -38,7 +38,8 @@ std::vector<MeshPart> split_mesh(const TetMesh& mesh, const std::vector<int32_t>
 std::vector<int32_t> join_parts(TetMesh& mesh, const std::vector<int32_t>& part_of_tet,
                                 const std::vector<MeshPart>& parts);
 
-// Per vertex: 1 when tets of two parts use it (it lies on a cut).
+// Per vertex: 1 when tets of two parts use it (it lies on a cut); the tets
+// in no part (a negative part) count as one more part.
 std::vector<uint8_t> cut_vertices(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet);
 
 // The tets with a marked vertex, grown by `layers` rings of tets (tets

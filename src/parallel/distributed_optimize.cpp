@@ -105,7 +105,8 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
     return out;
   }
   const Stopwatch clock;
-  if (root) out.totals.before = measure_quality(mesh);
+  QualityStats before;
+  if (root) before = measure_quality(mesh);
   const std::vector<int32_t> part_of_tet = partition_tets(comm, mesh);
   std::vector<MeshPart> parts;
   if (root) parts = split_mesh(mesh, part_of_tet, comm.size());
@@ -118,11 +119,8 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
       own.mesh.num_tets() > 0 ? optimize_mesh(own.mesh, part_options, &own.on_cut) : OptimizeStats{};
   out.part_seconds = comm.all_gather(clock.wall() - part_start);
   const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
-  out.totals = [&] {
-    OptimizeStats summed = sum_over_ranks(comm, mine);
-    summed.before = out.totals.before;
-    return summed;
-  }();
+  out.totals = sum_over_ranks(comm, mine);
+  out.totals.before = before;
   if (root) {
     for (size_t r = 0; r < parts.size(); ++r) parts[r].mesh = deserialize_part(optimized[r]);
     const std::vector<int32_t> joined = join_parts(mesh, part_of_tet, parts);

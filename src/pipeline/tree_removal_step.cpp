@@ -1,6 +1,6 @@
 // tree_removal_step: the two passes on one rank, or on every rank's copy of
-// the front with the other ranks' tets made again on rank 0 (see
-// tree_removal_step.hpp).
+// the front with the other ranks' tets and front changes merged on rank 0
+// (see tree_removal_step.hpp).
 #include "pipeline/tree_removal_step.hpp"
 
 #include <algorithm>
@@ -81,8 +81,8 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     std::vector<uint32_t> shrunk;
     for (size_t r = 1; r < images.size(); ++r) {
       size_t pos = 0;
-      const std::vector<uint32_t> tets = get_array<uint32_t>(images[r], pos);
-      mesh.tets.insert(mesh.tets.end(), tets.begin(), tets.end());
+      const std::vector<uint32_t> theirs = get_array<uint32_t>(images[r], pos);
+      mesh.tets.insert(mesh.tets.end(), theirs.begin(), theirs.end());
       Front::Changes changes;
       changes.closed = get_array<uint32_t>(images[r], pos);
       changes.added = get_array<uint32_t>(images[r], pos);
