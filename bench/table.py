@@ -41,15 +41,14 @@ def rate_summary(rows, tools):
     return lines
 
 
-def ratio_summary(rows, peers):
-    """partet / peer per input where both are good (inputs of MIN_TRIANGLES
+def ratio_summary(rows, mine, peers):
+    """MINE / peer per input where both are good (inputs of MIN_TRIANGLES
     or more), median over inputs."""
     by_key = {(r["input"], r["tool"]): r for r in rows}
-    lines = ["| partet vs | inputs of %d+ triangles | median speed ratio (tets/s) | median memory ratio (bytes/tet) |",
-             "|---|---:|---:|---:|"]
-    lines[0] %= MIN_TRIANGLES
+    lines = ["| %s vs | inputs of %d+ triangles | median speed ratio (tets/s) | median memory ratio (bytes/tet) |"
+             % (mine, MIN_TRIANGLES), "|---|---:|---:|---:|"]
     for peer in peers:
-        pairs = [(r, by_key.get((r["input"], peer))) for r in rows if r["tool"] == "partet" and good(r)]
+        pairs = [(r, by_key.get((r["input"], peer))) for r in rows if r["tool"] == mine and good(r)]
         pairs = [(p, q) for p, q in pairs if q and good(q) and p["triangles"] >= MIN_TRIANGLES]
         if not pairs:
             continue
@@ -65,7 +64,7 @@ def quality_comparison(rows, forced):
              " | partet % < 10 deg | best peer % < 10 deg |", "|---|---:|---:|---:|---:|---:|"]
     for name in sorted({r["input"] for r in rows}, key=input_order):
         mine = [r for r in rows if r["input"] == name and r["tool"] == "partet" and good(r)]
-        peers = [r for r in rows if r["input"] == name and r["tool"] != "partet" and good(r)]
+        peers = [r for r in rows if r["input"] == name and not r["tool"].startswith("partet") and good(r)]
         best_min = max((r["min_dihedral_deg"] for r in peers), default=None)
         best_pct = min((r["pct_under_10"] for r in peers), default=None)
         lines.append("| %s | %s | %s | %s | %s | %s |" % (
@@ -89,8 +88,11 @@ def write(rows, forced, tools, out_dir, header):
         note = r["status"] + (": " + r["error"].replace("|", "/").replace("\n", " ") if r["error"] else "")
         lines.append("| " + " | ".join(cell(r[key], fmt) for key, _, fmt in COLUMNS) + " | " + note + " |")
     lines += ["", "### Speed per tool", ""] + rate_summary(rows, tools)
-    lines += ["", "### partet against the peers", ""] + ratio_summary(rows, [t for t in ("tetgen-q", "gmsh-hxt")
-                                                                              if t in tools])
+    lines += ["", "### partet against the peers", ""] + ratio_summary(rows, "partet", [t for t in ("tetgen-q", "gmsh-hxt")
+                                                                                        if t in tools])
+    if "partet-np2" in tools:
+        lines += ["", "### partet on 2 ranks (both cores) against the peers and one rank", ""] + ratio_summary(
+            rows, "partet-np2", [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
     lines += ["", "### Worst angles (issue 5)", ""] + quality_comparison(rows, forced)
     with open(out_dir + "/table.md", "w") as f:
         f.write("\n".join(lines) + "\n")
