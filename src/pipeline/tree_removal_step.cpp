@@ -15,9 +15,10 @@ namespace partet {
 
 namespace {
 
-// The shaped pass, then the plain one (with `memo`); their counts summed.
+// The shaped pass (with `shaped_memo`), then the plain one (with `memo`);
+// their counts summed.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
-                         RemovalMemo& memo) {
+                         RemovalMemo& shaped_memo, RemovalMemo& memo) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
   RemovalOptions shaped;
@@ -25,7 +26,7 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   shaped.min_quality = kShapedRemovalQuality;
   RemovalOptions plain;
   plain.rank = rank;
-  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped);
+  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped, nullptr, &shaped_memo);
   RemovalCounts n = remove_faces_tree_supported(front, tree, root, mesh, plain, nullptr, &memo);
   n.tets += first.tets;
   n.passes += first.passes;
@@ -51,6 +52,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   ojson c;
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
+  RemovalMemo shaped_memo;  // the shaped passes' failures (rank 0's, for its finishing passes)
   if (distributed) {
     PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
     set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
@@ -58,8 +60,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     const uint32_t first_free = static_cast<uint32_t>(front->num_vertices() - initial.free_vertices);
     Stopwatch clock;
     // Rank 0 keeps what its passes learnt for the passes that finish.
-    RemovalMemo rank_memo;
-    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), root_rank ? memo : rank_memo);
+    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), shaped_memo, memo);
     const double rank_s = clock.wall();
     c["tets per rank"] = comm.all_gather(static_cast<int64_t>(mine.tets));
     c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
@@ -94,7 +95,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     c["merge s"] = clock.wall();
     std::fill(tree.owner.begin(), tree.owner.end(), 0);
   }
-  const RemovalCounts n = two_passes(*front, tree, root, mesh, 0, memo);
+  const RemovalCounts n = two_passes(*front, tree, root, mesh, 0, shaped_memo, memo);
   // Gap vertices no tet took are dropped: the tree-less removals place
   // their own where a cavity needs one, and a free vertex inside a cavity
   // would only block its fills.
