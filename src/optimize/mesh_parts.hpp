@@ -17,7 +17,7 @@
 namespace partet {
 
 struct MeshPart {
-  TetMesh mesh;                 // the part's tets on its own vertices (no boundary triangles)
+  TetMesh mesh;                 // the part's tets on its own vertices (split_mesh adds no boundary triangles)
   std::vector<uint32_t> whole;  // per part vertex: its index in the whole mesh, ascending
   std::vector<uint8_t> on_cut;  // per part vertex: 1 when a tet outside the part uses it
 };
