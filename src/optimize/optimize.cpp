@@ -346,6 +346,13 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
       if (a[0] == t && std::equal(a.begin() + 1, a.end(), topo.tet(t))) return true;
     return false;
   };
+  const auto on_caller_frozen = [&](uint32_t t) {
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t v = topo.tet(t)[k];
+      if (caller_frozen && v < caller_frozen->size() && (*caller_frozen)[v]) return true;
+    }
+    return false;
+  };
   const auto worse = [&](uint32_t t, uint32_t than) {
     return (than == TetTopology::kNone || topo.quality(t) < topo.quality(than)) && (aside.empty() || !set_aside(t));
   };
@@ -423,15 +430,8 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
         changed = true;
       }
     }
-    const auto on_frozen = [&] {
-      for (int k = 0; k < 4; ++k) {
-        const uint32_t v = topo.tet(worst)[k];
-        if (v < caller_frozen->size() && (*caller_frozen)[v]) return true;
-      }
-      return false;
-    };
-    if (!changed && !(options.set_aside_stuck_on_frozen && caller_frozen && round < options.worst_tet_rounds &&
-                      on_frozen()))
+    if (!changed &&
+        !(options.set_aside_stuck_on_frozen && round < options.worst_tet_rounds && on_caller_frozen(worst)))
       break;
     if (!changed) {
       std::array<uint32_t, 5> a{worst};

@@ -209,6 +209,24 @@ std::vector<std::string> Comm::gather(const std::string& bytes, int root) const 
   return out;
 }
 
+std::vector<std::string> Comm::all_gather(const std::string& bytes) const {
+  if (serial_) return {bytes};
+  const std::vector<int64_t> sizes = all_gather(static_cast<int64_t>(bytes.size()));
+  std::string all;
+  if (rank_ == 0)
+    for (const std::string& part : gather(bytes, 0)) all += part;
+  else
+    gather(bytes, 0);
+  broadcast(all, 0);
+  std::vector<std::string> out;
+  size_t at = 0;
+  for (int64_t n : sizes) {
+    out.push_back(all.substr(at, static_cast<size_t>(n)));
+    at += static_cast<size_t>(n);
+  }
+  return out;
+}
+
 void Comm::abort(int code) const {
   if (!serial_) MPI_Abort(comm_, code);
   std::exit(code);

@@ -56,6 +56,8 @@ class Comm {
   void broadcast(std::string& s, int root) const;
   // Every rank's bytes, in rank order, on `root` (empty elsewhere).
   std::vector<std::string> gather(const std::string& bytes, int root) const;
+  // Every rank's bytes, in rank order, on every rank.
+  std::vector<std::string> all_gather(const std::string& bytes) const;
 
   // Ends every rank of the job with `code` (used when ranks cannot agree).
   [[noreturn]] void abort(int code) const;

@@ -3,6 +3,8 @@
 #include "parallel/distributed_optimize.hpp"
 
 #include <algorithm>
+#include <array>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -18,49 +20,38 @@ namespace partet {
 
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180;
+constexpr double kDegree = std::numbers::pi / 180;
 
-// The counts of `x` added to `into` (not before/after, passes or seconds).
-void add_counts(OptimizeStats& into, const OptimizeStats& x) {
-  into.flips_23 += x.flips_23;
-  into.flips_32 += x.flips_32;
-  into.flips_44 += x.flips_44;
-  into.edge_removals += x.edge_removals;
-  into.multi_face_removals += x.multi_face_removals;
-  into.vertices_inserted += x.vertices_inserted;
-  into.vertices_collapsed += x.vertices_collapsed;
-  into.vertices_removed += x.vertices_removed;
-  into.vertices_moved += x.vertices_moved;
-  into.vertices_relaxed += x.vertices_relaxed;
-  into.sheets_lifted += x.sheets_lifted;
-  into.needles_split += x.needles_split;
-  into.topology_seconds += x.topology_seconds;
-  into.insertion_seconds += x.insertion_seconds;
-  into.smoothing_seconds += x.smoothing_seconds;
-  into.relaxation_seconds += x.relaxation_seconds;
-  into.measure_seconds += x.measure_seconds;
+// The counts of the optimizer's stats (not before/after or passes) and
+// their seconds, as one list: what the parts and the band add up.
+std::array<size_t*, 12> counts_of(OptimizeStats& s) {
+  return {&s.flips_23,           &s.flips_32,          &s.flips_44,         &s.edge_removals,
+          &s.multi_face_removals, &s.vertices_inserted, &s.vertices_collapsed, &s.vertices_removed,
+          &s.vertices_moved,      &s.vertices_relaxed,  &s.sheets_lifted,    &s.needles_split};
+}
+std::array<double*, 5> seconds_of(OptimizeStats& s) {
+  return {&s.topology_seconds, &s.insertion_seconds, &s.smoothing_seconds, &s.relaxation_seconds,
+          &s.measure_seconds};
 }
 
-// Every rank's counts and seconds summed, on every rank.
-OptimizeStats sum_over_ranks(const Comm& comm, const OptimizeStats& x) {
-  int64_t counts[] = {static_cast<int64_t>(x.flips_23),          static_cast<int64_t>(x.flips_32),
-                      static_cast<int64_t>(x.flips_44),          static_cast<int64_t>(x.edge_removals),
-                      static_cast<int64_t>(x.multi_face_removals), static_cast<int64_t>(x.vertices_inserted),
-                      static_cast<int64_t>(x.vertices_collapsed), static_cast<int64_t>(x.vertices_removed),
-                      static_cast<int64_t>(x.vertices_moved),     static_cast<int64_t>(x.vertices_relaxed),
-                      static_cast<int64_t>(x.sheets_lifted),      static_cast<int64_t>(x.needles_split)};
-  comm.sum(counts, std::size(counts));
+// The counts and seconds of `x` added to `into`.
+void add_counts(OptimizeStats& into, OptimizeStats x) {
+  const auto to = counts_of(into), from = counts_of(x);
+  for (size_t k = 0; k < to.size(); ++k) *to[k] += *from[k];
+  const auto to_s = seconds_of(into), from_s = seconds_of(x);
+  for (size_t k = 0; k < to_s.size(); ++k) *to_s[k] += *from_s[k];
+}
+
+// Every rank's counts and seconds summed, on every rank (passes: this rank's).
+OptimizeStats sum_over_ranks(const Comm& comm, OptimizeStats x) {
+  std::vector<int64_t> counts;
+  for (size_t* c : counts_of(x)) counts.push_back(static_cast<int64_t>(*c));
+  comm.sum(counts.data(), counts.size());
   OptimizeStats out;
-  size_t k = 0;
-  for (size_t* field : {&out.flips_23, &out.flips_32, &out.flips_44, &out.edge_removals, &out.multi_face_removals,
-                        &out.vertices_inserted, &out.vertices_collapsed, &out.vertices_removed, &out.vertices_moved,
-                        &out.vertices_relaxed, &out.sheets_lifted, &out.needles_split})
-    *field = static_cast<size_t>(counts[k++]);
-  out.topology_seconds = comm.sum(x.topology_seconds);
-  out.insertion_seconds = comm.sum(x.insertion_seconds);
-  out.smoothing_seconds = comm.sum(x.smoothing_seconds);
-  out.relaxation_seconds = comm.sum(x.relaxation_seconds);
-  out.measure_seconds = comm.sum(x.measure_seconds);
+  const auto fields = counts_of(out);
+  for (size_t k = 0; k < fields.size(); ++k) *fields[k] = static_cast<size_t>(counts[k]);
+  const auto to_s = seconds_of(out), from_s = seconds_of(x);
+  for (size_t k = 0; k < to_s.size(); ++k) *to_s[k] = comm.sum(*from_s[k]);
   out.passes = x.passes;
   return out;
 }

@@ -28,18 +28,15 @@ int rank_of_point(const std::vector<Separator>& separators, int ranks, const dou
 
 void set_leaf_owners(const Comm& comm, const LinearOctree& own, const std::vector<Separator>& separators,
                      const RootCube& root, LinearOctree& tree) {
-  // Every rank's boundary leaf keys, on every rank.
+  // Every rank's boundary leaf keys, on every rank: (key, rank), sorted by key.
   std::string keys;
   put_array(keys, own.key);
-  std::string all;
-  const std::vector<std::string> per_rank = comm.gather(keys, 0);
-  for (const std::string& k : per_rank) all += k;
-  comm.broadcast(all, 0);
-  // (key, rank) of every boundary leaf, sorted by key.
+  const std::vector<std::string> per_rank = comm.all_gather(keys);
   std::vector<std::pair<uint64_t, int32_t>> boundary;
-  size_t pos = 0;
-  for (int32_t r = 0; r < comm.size(); ++r)
-    for (uint64_t key : get_array<uint64_t>(all, pos)) boundary.emplace_back(key, r);
+  for (int32_t r = 0; r < comm.size(); ++r) {
+    size_t pos = 0;
+    for (uint64_t key : get_array<uint64_t>(per_rank[static_cast<size_t>(r)], pos)) boundary.emplace_back(key, r);
+  }
   std::sort(boundary.begin(), boundary.end());
   tree.owner.resize(tree.size());
   for (size_t i = 0; i < tree.size(); ++i) {

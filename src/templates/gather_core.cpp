@@ -46,30 +46,11 @@ std::string part_image(const LinearOctree& view, const TemplateCore& part, int r
 
 void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
                           LinearOctree& tree, TemplateCore& core, bool everywhere) {
-  std::vector<std::string> images = comm.gather(part_image(view, part, comm.rank()), 0);
+  const std::string mine = part_image(view, part, comm.rank());
+  const std::vector<std::string> images = everywhere ? comm.all_gather(mine) : comm.gather(mine, 0);
   tree = LinearOctree();
   core = TemplateCore();
-  if (everywhere) {
-    // Rank 0 sends every image to every rank, as one message.
-    std::string all;
-    if (comm.rank() == 0) {
-      std::vector<uint64_t> sizes;
-      for (const std::string& image : images) sizes.push_back(image.size());
-      put_array(all, sizes);
-      for (const std::string& image : images) all += image;
-    }
-    comm.broadcast(all, 0);
-    size_t pos = 0;
-    const std::vector<uint64_t> sizes = get_array<uint64_t>(all, pos);
-    images.clear();
-    for (uint64_t n : sizes) {
-      PARTET_ASSERT(pos + n <= all.size(), "truncated gathered core");
-      images.push_back(all.substr(pos, n));
-      pos += n;
-    }
-  } else if (comm.rank() != 0) {
-    return;
-  }
+  if (images.empty()) return;  // not rank 0, and not everywhere
   struct Part {
     std::vector<double> xyz;
     std::vector<uint32_t> tets;
