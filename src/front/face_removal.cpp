@@ -117,27 +117,7 @@ class Remover {
 };
 
 void Remover::neighbourhood(uint32_t f) {
-  const uint32_t* t = front_.face(f);
-  const double* p[3] = {front_.point(t[0]), front_.point(t[1]), front_.point(t[2])};
-  const double longest =
-      std::sqrt(std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])}));
-  // The box is centred ahead of the face, where targets make good tets.
-  double normal[3];
-  const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-  const double w[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-  normal[0] = u[1] * w[2] - u[2] * w[1];
-  normal[1] = u[2] * w[0] - u[0] * w[2];
-  normal[2] = u[0] * w[1] - u[1] * w[0];
-  const double norm = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-  const double ahead = norm > 0 ? options_.ahead * longest / norm : 0;
-  const double half = options_.reach * longest;
-  for (int k = 0; k < 3; ++k) {
-    const double centre = (p[0][k] + p[1][k] + p[2][k]) / 3 + ahead * normal[k];
-    const double lo = std::min({p[0][k], p[1][k], p[2][k], centre - half});
-    const double hi = std::max({p[0][k], p[1][k], p[2][k], centre + half});
-    box_lo_[k] = std::max(lo, root_.origin[k]);
-    box_hi_[k] = std::min(hi, root_.origin[k] + root_.edge());
-  }
+  removal_neighbourhood(front_, root_, f, options_, box_lo_, box_hi_);
   uint32_t glo[3], ghi[3];
   grid_range(root_, box_lo_, box_hi_, glo, ghi);
   front_.query().leaves_in_range(glo, ghi, leaves_);
@@ -389,6 +369,64 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
 }
 
 }  // namespace
+
+void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
+                           double* lo, double* hi) {
+  const uint32_t* t = front.face(f);
+  const double* p[3] = {front.point(t[0]), front.point(t[1]), front.point(t[2])};
+  const double longest =
+      std::sqrt(std::max({squared_distance(p[0], p[1]), squared_distance(p[1], p[2]), squared_distance(p[2], p[0])}));
+  // The box is centred ahead of the face, where targets make good tets.
+  double normal[3];
+  const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+  const double w[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+  normal[0] = u[1] * w[2] - u[2] * w[1];
+  normal[1] = u[2] * w[0] - u[0] * w[2];
+  normal[2] = u[0] * w[1] - u[1] * w[0];
+  const double norm = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  const double ahead = norm > 0 ? options.ahead * longest / norm : 0;
+  const double half = options.reach * longest;
+  for (int k = 0; k < 3; ++k) {
+    const double centre = (p[0][k] + p[1][k] + p[2][k]) / 3 + ahead * normal[k];
+    lo[k] = std::max(std::min({p[0][k], p[1][k], p[2][k], centre - half}), root.origin[k]);
+    hi[k] = std::min(std::max({p[0][k], p[1][k], p[2][k], centre + half}), root.origin[k] + root.edge());
+  }
+}
+
+std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root, const RemovalOptions& options,
+                                        const RemovalMemo& memo, bool full) {
+  const std::vector<uint32_t>& failed_at = full ? memo.failed_full_at : memo.failed_capped_at;
+  std::vector<uint32_t> faces;
+  std::vector<size_t> leaves;
+  for (uint32_t f = 0; f < front.num_face_slots() && f < failed_at.size(); ++f) {
+    if (!front.alive(f) || failed_at[f] == kNeverFailed) continue;
+    double lo[3], hi[3];
+    removal_neighbourhood(front, root, f, options, lo, hi);
+    uint32_t glo[3], ghi[3];
+    grid_range(root, lo, hi, glo, ghi);
+    front.query().leaves_in_range(glo, ghi, leaves);
+    if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at[f]; }))
+      faces.push_back(f);
+  }
+  return faces;
+}
+
+void record_failures(const Front& front, const std::vector<uint32_t>& faces, bool full, double min_quality,
+                     RemovalMemo& memo) {
+  if (memo.min_quality != min_quality) {
+    memo.min_quality = min_quality;
+    memo.failed_capped_at.clear();
+    memo.failed_full_at.clear();
+  }
+  memo.failed_capped_at.resize(front.num_face_slots(), kNeverFailed);
+  memo.failed_full_at.resize(front.num_face_slots(), kNeverFailed);
+  PARTET_ASSERT(front.changes() < kNeverFailed, "more front changes than the memo can stamp");
+  const uint32_t now = static_cast<uint32_t>(front.changes());
+  for (uint32_t f : faces) {
+    memo.failed_capped_at[f] = now;
+    if (full) memo.failed_full_at[f] = now;
+  }
+}
 
 void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
   for (std::vector<uint32_t>* at : {&failed_capped_at, &failed_full_at}) {

@@ -122,6 +122,22 @@ struct RemovalCounts {
   size_t skipped_checks = 0; // candidates known to fail again (their blocker is still there)
 };
 
+// The neighbourhood box of face f (above), clipped to the root cube.
+void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
+                           double* lo, double* hi);
+
+// The alive faces whose latest failure `memo` holds (in a full pass with
+// `full`, else in a capped one) still stands: none of their neighbourhood
+// leaves changed since. A face's answer depends on nothing else, so a copy
+// of the front equal to this one over those leaves fails them too.
+std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root, const RemovalOptions& options,
+                                        const RemovalMemo& memo, bool full);
+// Records `faces` as failed now in `memo` (a capped pass, and with `full` a
+// full one too), under `min_quality`: failures another copy of the front
+// found standing (standing_failures), so that this copy's passes skip them.
+void record_failures(const Front& front, const std::vector<uint32_t>& faces, bool full, double min_quality,
+                     RemovalMemo& memo);
+
 // Makes tet (base face f, p): appends it to `out`, updates the front
 // (`added`: faces made; `shrunk`: leaves whose front lost faces) and
 // reclassifies boundary or too-close leaves whose front became empty as

@@ -310,22 +310,33 @@ void Front::remove_tet(const uint32_t tet[4], std::vector<uint32_t>& added, std:
     if (twin != kNoIndex) close_face(twin, shrunk);
 }
 
-Front::Changes Front::changes_since(size_t slots, uint32_t first_free_vertex) const {
-  PARTET_ASSERT(slots <= alive_.size(), "changes since more face slots than the front has");
+Front::Snapshot Front::snapshot() const {
+  Snapshot s;
+  s.slots = alive_.size();
+  for (uint32_t f = 0; f < alive_.size(); ++f)
+    if (alive_[f]) s.alive_faces.push_back(f);
+  for (uint32_t v = 0; v < free_.size(); ++v)
+    if (free_[v]) s.free_vertices.push_back(v);
+  return s;
+}
+
+Front::Changes Front::changes_since(const Snapshot& then) const {
+  PARTET_ASSERT(then.slots <= alive_.size(), "changes since more face slots than the front has");
   Changes c;
-  for (uint32_t f = 0; f < slots; ++f)
-    if (!alive_[f]) c.closed.push_back(f);
-  for (size_t f = slots; f < alive_.size(); ++f)
+  for (uint32_t f : then.alive_faces)
+    if (!alive_[f]) c.closed.insert(c.closed.end(), &faces_[3 * size_t{f}], &faces_[3 * size_t{f}] + 3);
+  for (size_t f = then.slots; f < alive_.size(); ++f)
     if (alive_[f]) c.added.insert(c.added.end(), &faces_[3 * f], &faces_[3 * f] + 3);
-  for (uint32_t v = first_free_vertex; v < free_.size(); ++v)
+  for (uint32_t v : then.free_vertices)
     if (!free_[v]) c.taken.push_back(v);
   return c;
 }
 
 void Front::merge(const Changes& changes, std::vector<uint32_t>& shrunk) {
   ++changes_;
-  for (uint32_t f : changes.closed) {
-    PARTET_ASSERT(f < alive_.size() && alive_[f], "a merged front closes a face closed here");
+  for (size_t i = 0; i + 3 <= changes.closed.size(); i += 3) {
+    const uint32_t f = find_face(changes.closed[i], changes.closed[i + 1], changes.closed[i + 2]);
+    PARTET_ASSERT(f != kNoIndex, "a merged front closes a face not alive here");
     close_face(f, shrunk);
   }
   for (size_t i = 0; i + 3 <= changes.added.size(); i += 3) {

@@ -149,17 +149,26 @@ class Front {
   // Removes the last vertex, which no face may have used (undoes add_vertex).
   void remove_last_vertex();
 
-  // What a copy of this front changed since the copy was made, when it had
-  // `slots` face slots and its free vertices were those from
-  // `first_free_vertex` on: the slots below `slots` it closed (ascending),
-  // the faces it added that are still alive (3 vertex indices each, in slot
-  // order) and the vertices free then and not now (ascending).
+  // The front's state now (face slots, the alive faces and the free
+  // vertices, ascending), to tell later what a copy of it changed.
+  struct Snapshot {
+    size_t slots = 0;
+    std::vector<uint32_t> alive_faces, free_vertices;
+  };
+  Snapshot snapshot() const;
+  // What this front changed since `then` (a snapshot of it, or of a copy
+  // identical then as sets of faces and free vertices): the faces alive then
+  // and closed now (3 vertex indices each, in the order of `then`), the
+  // faces added since that are still alive (3 vertex indices each, in slot
+  // order) and the vertices free then and not now (ascending). Faces are
+  // named by their vertices, so copies whose slots are numbered differently
+  // exchange them.
   struct Changes {
     std::vector<uint32_t> closed, added, taken;
   };
-  Changes changes_since(size_t slots, uint32_t first_free_vertex) const;
+  Changes changes_since(const Snapshot& then) const;
   // Takes in the changes another copy of this front made (changes_since on
-  // it, made from the same front as this one) where this front changed
+  // it, from the same front as this one) where this front changed
   // nothing: no face or vertex either touched. The faces closed there are
   // closed here, the faces added there are added here (new slots, in
   // order), and the free vertices taken there and used by no face here are

@@ -1,5 +1,6 @@
-// tree_removal_step: the two passes on one rank, or on every rank's copy of
-// the front with the other ranks' tets and front changes merged on rank 0
+// tree_removal_step: the two passes on one rank; on P ranks, rounds of them
+// on every rank's copy of the front, the interfaces left by one round
+// spread over the ranks for the next, and what is left finished on rank 0
 // (see tree_removal_step.hpp).
 #include "pipeline/tree_removal_step.hpp"
 
@@ -9,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "parallel/byte_image.hpp"
+#include "partition/interface_owners.hpp"
 #include "partition/leaf_owners.hpp"
 
 namespace partet {
@@ -16,9 +18,11 @@ namespace partet {
 namespace {
 
 // The shaped pass (with `shaped_memo`), then the plain one (with `memo`);
-// their counts summed.
+// their counts summed. With `seeds` the shaped pass starts from those faces
+// and the plain one from those still alive and the faces the shaped pass
+// added; without, both start from every alive face.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
-                         RemovalMemo& shaped_memo, RemovalMemo& memo) {
+                         RemovalMemo& shaped_memo, RemovalMemo& memo, const std::vector<uint32_t>* seeds = nullptr) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
   RemovalOptions shaped;
@@ -26,8 +30,16 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   shaped.min_quality = kShapedRemovalQuality;
   RemovalOptions plain;
   plain.rank = rank;
-  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped, nullptr, &shaped_memo);
-  RemovalCounts n = remove_faces_tree_supported(front, tree, root, mesh, plain, nullptr, &memo);
+  const size_t slots = front.num_face_slots();
+  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped, seeds, &shaped_memo);
+  std::vector<uint32_t> next;
+  if (seeds) {
+    for (uint32_t f : *seeds)
+      if (front.alive(f)) next.push_back(f);
+    for (uint32_t f = static_cast<uint32_t>(slots); f < front.num_face_slots(); ++f)
+      if (front.alive(f)) next.push_back(f);
+  }
+  RemovalCounts n = remove_faces_tree_supported(front, tree, root, mesh, plain, seeds ? &next : nullptr, &memo);
   n.tets += first.tets;
   n.passes += first.passes;
   n.checks += first.checks;
@@ -35,12 +47,52 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   return n;
 }
 
-// A rank's tets made after `first_tet` and its front's changes.
-std::string removal_image(const TetMesh& mesh, size_t first_tet, const Front::Changes& changes) {
+std::string changes_image(const Front::Changes& changes) {
   std::string out;
-  put_array(out, mesh.tets.data() + 4 * first_tet, mesh.tets.size() - 4 * first_tet);
   for (const std::vector<uint32_t>* v : {&changes.closed, &changes.added, &changes.taken}) put_array(out, *v);
   return out;
+}
+
+// Every other rank's front changes (images by rank, changes_image) merged
+// into this rank's front, in rank order.
+void merge_others(const Comm& comm, const std::vector<std::string>& images, Front& front, LinearOctree& tree) {
+  std::vector<uint32_t> shrunk;
+  for (size_t r = 0; r < images.size(); ++r) {
+    if (static_cast<int>(r) == comm.rank()) continue;
+    size_t pos = 0;
+    Front::Changes changes;
+    changes.closed = get_array<uint32_t>(images[r], pos);
+    changes.added = get_array<uint32_t>(images[r], pos);
+    changes.taken = get_array<uint32_t>(images[r], pos);
+    shrunk.clear();
+    front.merge(changes, shrunk);
+    mark_done_leaves(front, tree, shrunk);
+  }
+}
+
+// This rank's failures in `memo` that still stand (standing_failures), in
+// capped and in full passes, as vertex triples: rank 0 skips those faces
+// in its finishing passes instead of failing them again.
+void put_failures(const Front& front, const RootCube& root, const RemovalMemo& memo, std::string& out) {
+  for (const bool full : {false, true}) {
+    std::vector<uint32_t> triples;
+    for (uint32_t f : standing_failures(front, root, RemovalOptions{}, memo, full))
+      triples.insert(triples.end(), front.face(f), front.face(f) + 3);
+    put_array(out, triples);
+  }
+}
+
+void take_failures(const std::string& image, size_t& pos, const Front& front, double min_quality, RemovalMemo& memo) {
+  for (const bool full : {false, true}) {
+    const std::vector<uint32_t> triples = get_array<uint32_t>(image, pos);
+    std::vector<uint32_t> faces;
+    for (size_t i = 0; i + 3 <= triples.size(); i += 3) {
+      const uint32_t f = front.find_face(triples[i], triples[i + 1], triples[i + 2]);
+      PARTET_ASSERT(f != kNoIndex, "a failure another rank found is for a face not alive here");
+      faces.push_back(f);
+    }
+    record_failures(front, faces, full, min_quality, memo);
+  }
 }
 
 }  // namespace
@@ -53,49 +105,86 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
   RemovalMemo shaped_memo;  // the shaped passes' failures (rank 0's, for its finishing passes)
+  std::vector<uint32_t> seeds;  // on P ranks: the faces the last round left across the ranks
   if (distributed) {
     PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
     set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
-    const size_t core_tets = mesh.num_tets(), slots = front->num_face_slots();
-    const uint32_t first_free = static_cast<uint32_t>(front->num_vertices() - initial.free_vertices);
-    Stopwatch clock;
-    // Rank 0 keeps what its passes learnt for the passes that finish.
-    const RemovalCounts mine = two_passes(*front, tree, root, mesh, comm.rank(), shaped_memo, memo);
-    const double rank_s = clock.wall();
-    c["tets per rank"] = comm.all_gather(static_cast<int64_t>(mine.tets));
-    c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
-    c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
+    const size_t core_tets = mesh.num_tets();
+    size_t my_tets = 0, my_checks = 0, my_skipped = 0;
+    double rank_s = 0, merge_s = 0, interface_s = 0;
+    ojson interfaces = ojson::array();
+    for (int round = 0;; ++round) {
+      // Rank 0 keeps what its passes learn for the passes that finish.
+      const Front::Snapshot start = front->snapshot();
+      Stopwatch clock;
+      const RemovalCounts mine =
+          two_passes(*front, tree, root, mesh, comm.rank(), shaped_memo, memo, round == 0 ? nullptr : &seeds);
+      rank_s += clock.wall();
+      my_tets += mine.tets;
+      my_checks += mine.checks;
+      my_skipped += mine.skipped_checks;
+      passes += mine.passes;
+      if (round == 0) {
+        c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
+        c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
+      }
+      const std::vector<std::string> images = comm.all_gather(changes_image(front->changes_since(start)));
+      clock.restart();
+      merge_others(comm, images, *front, tree);
+      merge_s += clock.wall();
+      // The fronts are now the same on every rank (as sets of faces): the
+      // faces no rank could remove for a leaf of another are the same too.
+      clock.restart();
+      const InterfaceFaces faces = interface_faces(*front, tree, root, RemovalOptions{});
+      interfaces.push_back(faces.faces.size());
+      seeds = faces.faces;
+      // Another round only while the interfaces shrink (the same faces
+      // would be cut the same way again).
+      if (round == kInterfaceRounds || faces.faces.empty() ||
+          (round > 0 && faces.faces.size() >= interfaces[interfaces.size() - 2].get<size_t>()))
+        break;
+      reown_leaves_by_interfaces(comm, *front, faces, root, tree);
+      interface_s += clock.wall();
+    }
+    c["tets per rank"] = comm.all_gather(static_cast<int64_t>(my_tets));
     c["rank s per rank"] = comm.all_gather(rank_s);
-    const std::vector<std::string> images = comm.gather(
-        root_rank ? std::string() : removal_image(mesh, core_tets, front->changes_since(slots, first_free)), 0);
-    tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.tets)));
-    passes = mine.passes;
-    checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.checks)));
-    skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(mine.skipped_checks)));
+    c["merge s per rank"] = comm.all_gather(merge_s);
+    c["interface faces after round"] = interfaces;
+    c["interface s"] = interface_s;
+    tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_tets)));
+    checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_checks)));
+    skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_skipped)));
+    std::string mine;
+    if (!root_rank) {
+      put_array(mine, mesh.tets.data() + 4 * core_tets, mesh.tets.size() - 4 * core_tets);
+      put_failures(*front, root, shaped_memo, mine);
+      put_failures(*front, root, memo, mine);
+    }
+    const std::vector<std::string> images = comm.gather(mine, 0);
     if (!root_rank) {
       front.reset();
       mesh = TetMesh{};
       return ojson::object();
     }
-    // The other ranks' tets join the mesh, and their changes rank 0's front.
-    clock.restart();
-    std::vector<uint32_t> shrunk;
+    // The other ranks' tets join the mesh (their front changes already
+    // joined the front), and what their passes could not remove is not
+    // tried again while it stands.
     for (size_t r = 1; r < images.size(); ++r) {
       size_t pos = 0;
       const std::vector<uint32_t> theirs = get_array<uint32_t>(images[r], pos);
       mesh.tets.insert(mesh.tets.end(), theirs.begin(), theirs.end());
-      Front::Changes changes;
-      changes.closed = get_array<uint32_t>(images[r], pos);
-      changes.added = get_array<uint32_t>(images[r], pos);
-      changes.taken = get_array<uint32_t>(images[r], pos);
-      shrunk.clear();
-      front->merge(changes, shrunk);
-      mark_done_leaves(*front, tree, shrunk);
+      take_failures(images[r], pos, *front, kShapedRemovalQuality, shaped_memo);
+      take_failures(images[r], pos, *front, 0, memo);
     }
-    c["merge s"] = clock.wall();
     std::fill(tree.owner.begin(), tree.owner.end(), 0);
   }
-  const RemovalCounts n = two_passes(*front, tree, root, mesh, 0, shaped_memo, memo);
+  Stopwatch finish;
+  // On P ranks the finishing passes start from the faces the last round
+  // left across the ranks: every other face was tried by a rank that owned
+  // its whole neighbourhood, and those whose failure no longer stands are
+  // tried again by the tree-less removals' first pass.
+  const RemovalCounts n =
+      two_passes(*front, tree, root, mesh, 0, shaped_memo, memo, distributed ? &seeds : nullptr);
   // Gap vertices no tet took are dropped: the tree-less removals place
   // their own where a cavity needs one, and a free vertex inside a cavity
   // would only block its fills.
@@ -103,7 +192,10 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   // The closed faces (most slots by now) go before the tree-less removals
   // allocate theirs.
   memo.renumber(front->compact());
-  if (distributed) c["tets on rank 0 after"] = n.tets;
+  if (distributed) {
+    c["tets on rank 0 after"] = n.tets;
+    c["rank 0 after s"] = finish.wall();
+  }
   c["tets"] = tets + n.tets;
   c["faces left"] = n.faces_left;
   c["passes"] = passes + n.passes;

@@ -8,21 +8,25 @@
 //    rank runs the same two passes on its copy, making only the removals
 //    whose neighbourhood leaves are all its own (removals never
 //    communicate), so two ranks' tets never touch one leaf and are valid
-//    together. Rank 0 appends the other ranks' tets to its mesh and merges
-//    their fronts' changes into its front, in rank order (Front::merge:
-//    the front their tets would give if made again here), takes every leaf
-//    as its own and runs the two passes over what is left: the faces near
-//    the cuts between the ranks' parts and those no rank could remove.
-//    This stands in for the paper's repartitioning of the face, edge and
-//    vertex interfaces (steps 5-9), which would keep the work on the
-//    ranks.
+//    together. Every rank then merges the other ranks' front changes into
+//    its copy, in rank order (Front::merge: the front their tets would give
+//    if made again there), so that the copies hold the same faces again.
+//    The faces none could remove for a leaf of another rank (the
+//    interfaces along the cuts) are spread over the ranks by new owners
+//    (interface_owners.hpp: the paper's repartitioning of the face, edge
+//    and vertex interfaces, steps 5-9), and the ranks run the two passes
+//    again from those faces; up to kInterfaceRounds such rounds. Rank 0
+//    then appends the other ranks' tets to its mesh, takes every leaf as
+//    its own and runs the two passes over what is left: the faces near
+//    where the last cuts meet and those no rank could remove.
 // Afterwards, on rank 0, the gap vertices no tet took are dropped and the
 // front is compacted; the other ranks end with no front and an empty mesh.
 // The counts: the tets, faces left, passes and checks of the step; on P > 1
 // ranks also, per rank, the tets its passes made, the faces its copy had
-// left and how many of those it skipped for a leaf of another rank (the
-// faces of the other ranks' leaves among them) and its passes' wall time;
-// the merge's time on rank 0 and the tets its finishing passes made.
+// left after the first round and how many of those it skipped for a leaf
+// of another rank (the faces of the other ranks' leaves among them), its
+// passes' and its merges' wall time; the interface faces after each round,
+// and the tets rank 0's finishing passes made.
 #pragma once
 
 #include <memory>
@@ -42,6 +46,10 @@ namespace partet {
 // Targets of the first pass make tets at least this well shaped (q of
 // face_removal.hpp).
 constexpr double kShapedRemovalQuality = 0.05;
+
+// Rounds on the interfaces after the first on P > 1 ranks (face, then edge
+// interfaces; what the last leaves is finished on rank 0).
+constexpr int kInterfaceRounds = 2;
 
 // The boundary partition's result, for P > 1 ranks.
 struct RankLeaves {

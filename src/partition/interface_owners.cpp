@@ -1,0 +1,54 @@
+// interface_faces and reown_leaves_by_interfaces (see interface_owners.hpp).
+#include "partition/interface_owners.hpp"
+
+#include <algorithm>
+
+#include "octree/range_query.hpp"
+#include "partition/boundary_partition.hpp"
+#include "partition/leaf_owners.hpp"
+#include "partition/recursive_bisection.hpp"
+
+namespace partet {
+
+InterfaceFaces interface_faces(const Front& front, const LinearOctree& tree, const RootCube& root,
+                               const RemovalOptions& options) {
+  InterfaceFaces out;
+  std::vector<size_t> leaves;
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+    if (!front.alive(f)) continue;
+    double lo[3], hi[3];
+    removal_neighbourhood(front, root, f, options, lo, hi);
+    uint32_t glo[3], ghi[3];
+    grid_range(root, lo, hi, glo, ghi);
+    front.query().leaves_in_range(glo, ghi, leaves);
+    int32_t low = tree.owner[leaves.front()], high = low;
+    for (size_t leaf : leaves) {
+      low = std::min(low, tree.owner[leaf]);
+      high = std::max(high, tree.owner[leaf]);
+    }
+    if (low == high) continue;
+    out.faces.push_back(f);
+    out.lowest.push_back(low);
+  }
+  return out;
+}
+
+void reown_leaves_by_interfaces(const Comm& comm, const Front& front, const InterfaceFaces& faces,
+                                const RootCube& root, LinearOctree& tree) {
+  std::vector<double> xyz, weight;
+  for (size_t i = 0; i < faces.faces.size(); ++i) {
+    if (faces.lowest[i] != comm.rank()) continue;
+    const uint32_t* t = front.face(faces.faces[i]);
+    for (int k = 0; k < 3; ++k)
+      xyz.push_back((front.point(t[0])[k] + front.point(t[1])[k] + front.point(t[2])[k]) / 3);
+    weight.push_back(1);
+  }
+  const PartitionResult cut = partition_points(comm, xyz.data(), weight.data(), weight.size(), BisectionMethod::kRib);
+  for (size_t i = 0; i < tree.size(); ++i) {
+    double centre[3];
+    octant_centre(root, tree.key[i], tree.level[i], centre);
+    tree.owner[i] = rank_of_point(cut.separators, comm.size(), centre);
+  }
+}
+
+}  // namespace partet
