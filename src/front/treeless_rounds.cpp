@@ -69,6 +69,12 @@ class TreelessRemover {
   // Leaves over the box of the given points; false when one is owned by
   // another rank.
   bool own_leaves_around(const double* const* points, int n);
+  // False when another rank owns a leaf over the component's box grown by
+  // half its largest extent on every side: room for what a fill or a
+  // growth there may touch. The rounds leave such a component alone (the
+  // ranks that share it could only churn at its cut; rank 0 closes it
+  // afterwards). Always true when this rank owns every leaf.
+  bool own_component(const std::vector<uint32_t>& faces);
   bool valid_tet(uint32_t f, uint32_t v);
   bool sees_all(const std::vector<uint32_t>& faces, const double* q) const;
   // Cones the faces that see q to a new vertex at q where valid; returns
@@ -110,6 +116,7 @@ class TreelessRemover {
   const TreelessStrategy strategy_;
   TreelessCounts counts_;
   bool ids_ = false;
+  bool shared_ = false;  // another rank owns a leaf of the tree
   size_t vertex_budget_ = 0;
   size_t deletion_budget_ = 0;
   std::unique_ptr<TetIncidence> incidence_;
@@ -225,6 +232,26 @@ bool TreelessRemover::own_leaves_around(const double* const* points, int n) {
   for (size_t leaf : leaves_)
     if (tree_.owner[leaf] != options_.rank) return false;
   return true;
+}
+
+bool TreelessRemover::own_component(const std::vector<uint32_t>& faces) {
+  if (!shared_) return true;
+  double lo[3], hi[3];
+  std::copy_n(front_.point(front_.face(faces[0])[0]), 3, lo);
+  std::copy_n(lo, 3, hi);
+  for (uint32_t f : faces)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], front_.point(front_.face(f)[i])[k]);
+        hi[k] = std::max(hi[k], front_.point(front_.face(f)[i])[k]);
+      }
+  const double margin = 0.5 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  for (int k = 0; k < 3; ++k) {
+    lo[k] -= margin;
+    hi[k] += margin;
+  }
+  const double* corners[2] = {lo, hi};
+  return own_leaves_around(corners, 2);
 }
 
 bool TreelessRemover::valid_tet(uint32_t f, uint32_t v) {
@@ -587,6 +614,7 @@ std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
 TreelessCounts TreelessRemover::run() {
   tree_pass();  // also appends the front vertices `out` lacks
   ids_ = out_.global_ids.size() == out_.num_vertices();
+  shared_ = std::any_of(tree_.owner.begin(), tree_.owner.end(), [&](int32_t o) { return o != options_.rank; });
   vertex_budget_ = front_.num_vertices() + 4 * front_.num_alive_faces() + 64;
   deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
@@ -605,8 +633,10 @@ TreelessCounts TreelessRemover::run() {
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {
       const auto first = components_.begin() + static_cast<ptrdiff_t>(component_first_[i]);
       const auto last = components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]);
-      if (last - first <= static_cast<ptrdiff_t>(max_cavity))
-        cavities.emplace_back(first, last);
+      std::vector<uint32_t> component(first, last);
+      if (!own_component(component)) continue;
+      if (component.size() <= max_cavity)
+        cavities.push_back(std::move(component));
       else
         stuck.insert(stuck.end(), first, last);
     }

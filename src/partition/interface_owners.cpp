@@ -1,4 +1,4 @@
-// interface_faces and reown_leaves_by_interfaces (see interface_owners.hpp).
+// interface_faces and reown_leaves_by_faces (see interface_owners.hpp).
 #include "partition/interface_owners.hpp"
 
 #include <algorithm>
@@ -33,12 +33,12 @@ InterfaceFaces interface_faces(const Front& front, const LinearOctree& tree, con
   return out;
 }
 
-void reown_leaves_by_interfaces(const Comm& comm, const Front& front, const InterfaceFaces& faces,
-                                const RootCube& root, LinearOctree& tree) {
+void reown_leaves_by_faces(const Comm& comm, const Front& front, const std::vector<uint32_t>& faces,
+                           const std::vector<int32_t>& contributor, const RootCube& root, LinearOctree& tree) {
   std::vector<double> xyz, weight;
-  for (size_t i = 0; i < faces.faces.size(); ++i) {
-    if (faces.lowest[i] != comm.rank()) continue;
-    const uint32_t* t = front.face(faces.faces[i]);
+  for (size_t i = 0; i < faces.size(); ++i) {
+    if (contributor[i] != comm.rank()) continue;
+    const uint32_t* t = front.face(faces[i]);
     for (int k = 0; k < 3; ++k)
       xyz.push_back((front.point(t[0])[k] + front.point(t[1])[k] + front.point(t[2])[k]) / 3);
     weight.push_back(1);

@@ -32,13 +32,14 @@ struct InterfaceFaces {
 InterfaceFaces interface_faces(const Front& front, const LinearOctree& tree, const RootCube& root,
                                const RemovalOptions& options);
 
-// Collective; `front`, `tree` and `faces` the same on every rank (as sets:
-// face slots may be numbered differently). Sets tree.owner on every rank,
-// identically: every leaf goes to the rank on whose side of the separators
-// its centre lies, the separators cutting the faces' centroids into
-// comm.size() equal shares by inertial bisection. Each face is passed to
-// the bisection by its lowest owner's rank only.
-void reown_leaves_by_interfaces(const Comm& comm, const Front& front, const InterfaceFaces& faces,
-                                const RootCube& root, LinearOctree& tree);
+// Collective; `front`, `tree`, `faces` and `contributor` the same on every
+// rank (as sets: face slots may be numbered differently). Sets tree.owner
+// on every rank, identically: every leaf goes to the rank on whose side of
+// the separators its centre lies, the separators cutting the faces'
+// centroids into comm.size() equal shares by inertial bisection. Face i is
+// passed to the bisection by rank contributor[i] only (for interfaces: its
+// lowest owner).
+void reown_leaves_by_faces(const Comm& comm, const Front& front, const std::vector<uint32_t>& faces,
+                           const std::vector<int32_t>& contributor, const RootCube& root, LinearOctree& tree);
 
 }  // namespace partet

@@ -43,6 +43,7 @@
 #include "pipeline/optimize_step.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/tree_removal_step.hpp"
+#include "pipeline/treeless_step.hpp"
 #include "pipeline/report.hpp"
 #include "surface/diagnose.hpp"
 #include "templates/gather_core.hpp"
@@ -171,25 +172,6 @@ std::string where_left(const SurfaceMesh& left) {
   }
   if (left.num_triangles() > 5) text += ", ...";
   return text;
-}
-
-// How the tree-less removals ended when they left faces, for the error:
-// " (the tree-less removals tried 4 strategies, leaving 706, 402, 270 and
-// 310 faces; this front is what \"cone first\" left, stalled: 64 rounds
-// without a smaller front)".
-std::string treeless_ending(const TreelessCounts& n) {
-  std::string text;
-  const std::vector<size_t>& left = n.faces_left_by_attempt;
-  if (left.size() > 1) {
-    text = "the tree-less removals tried " + std::to_string(left.size()) + " strategies, leaving ";
-    for (size_t i = 0; i < left.size(); ++i)
-      text += (i == 0 ? "" : i + 1 == left.size() ? " and " : ", ") + std::to_string(left[i]);
-    text += std::string(" faces; this front is what \"") + strategy_name(n.strategy) + "\" left";
-  }
-  if (n.stalled)
-    text += (text.empty() ? "the tree-less removals " : ", ") + std::string("stalled: ") +
-            std::to_string(RemovalOptions{}.stall_rounds) + " rounds without a smaller front";
-  return text.empty() ? text : " (" + text + ")";
 }
 
 // OUTPUT's stem + ".front.off": where --keep-partial puts the front left.
@@ -554,23 +536,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         report.run_step("face removals (tree-less)", [&] {
-          if (!root_rank) return ojson::object();
-          TreelessCounts n = remove_faces_treeless(*front, s.tree, s.root, s.mesh, {}, &memo);
-          ojson c;
-          c["tets (tree-supported)"] = n.tree_tets;
-          c["tets (new vertices)"] = n.new_vertex_tets;
-          c["vertices added"] = n.vertices_added;
-          c["tets deleted"] = n.tets_deleted;
-          c["star fills"] = n.star_fills;
-          c["partial cones"] = n.partial_cones;
-          c["advances"] = n.advances;
-          c["rounds"] = n.rounds;
-          c["stalled"] = n.stalled;
-          c["strategy"] = strategy_name(n.strategy);
-          c["faces left by attempt"] = n.faces_left_by_attempt;
-          c["faces left"] = n.faces_left;
-          treeless_note = treeless_ending(n);
-          return c;
+          return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note);
         });
       }
       if (front) left = front_left(*front);

@@ -143,7 +143,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
       if (round == kInterfaceRounds || faces.faces.empty() ||
           (round > 0 && faces.faces.size() >= interfaces[interfaces.size() - 2].get<size_t>()))
         break;
-      reown_leaves_by_interfaces(comm, *front, faces, root, tree);
+      reown_leaves_by_faces(comm, *front, faces.faces, faces.lowest, root, tree);
       interface_s += clock.wall();
     }
     c["tets per rank"] = comm.all_gather(static_cast<int64_t>(my_tets));

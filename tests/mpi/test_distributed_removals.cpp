@@ -1,4 +1,4 @@
-// The tree-supported face removals on 1, 2 and 4 ranks (pipeline step 4 on
+// The face removals on 1, 2 and 4 ranks. Tree-supported (pipeline step 4 on
 // every rank's copy of the front, rounds on the interfaces, the rest on
 // rank 0): the finished mesh is valid against the surface; on P > 1 ranks
 // some faces waited because their neighbourhood reached another rank's
@@ -8,6 +8,8 @@
 // tets and the interface rounds left fewer faces across the ranks than the
 // first round. Each leaf has one owner, the same on every rank, and a
 // boundary leaf's owner is the rank the boundary partition sent it to.
+// Tree-less (step 10): the ranks close part of what is left and the mesh
+// is valid and the same from run to run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include "partition/leaf_owners.hpp"
 #include "pipeline/mesh_command.hpp"
 #include "pipeline/tree_removal_step.hpp"
+#include "pipeline/treeless_step.hpp"
 #include "test_support.hpp"
 
 namespace partet {
@@ -139,6 +142,57 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, DistributedRemovals,
                            const std::string name = info.param.surface;
                            return name.substr(5, name.find('.') - 5);
                          });
+
+// The tree-less removals on the ranks (spool: a CAD part whose tree-less
+// removals delete thousands of tets): the mesh is valid against the
+// surface and, on P > 1 ranks, the ranks' first round closes part of the
+// front the tree-supported removals left, every round reporting each
+// rank's rounds; a second run gives the same mesh.
+TEST(DistributedTreeless, TheRanksCloseCavitiesAndTheMeshIsValid) {
+  const Comm comm = Comm::world();
+  const Log log(comm.rank(), false, false);
+  const std::string dir = "/tmp/partet_mpi_treeless_" + std::to_string(comm.size());
+  if (comm.rank() == 0) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  comm.barrier();
+  MeshOptions o;
+  o.input = test::data_path("good/spool.off");
+  o.output = dir + "/mesh.vtu";
+  o.report = dir + "/report.json";
+  o.quiet = true;
+  ASSERT_EQ(run_mesh(o, comm, log), kExitOk);
+  MeshOptions again = o;
+  again.output = dir + "/again.vtu";
+  again.report = "";
+  ASSERT_EQ(run_mesh(again, comm, log), kExitOk);
+  if (comm.rank() != 0) return;
+  EXPECT_EQ(test::read_text(o.output), test::read_text(again.output));
+  const SurfaceMesh surface = read_surface_file(o.input);
+  const ValidationResult v = validate_mesh(read_volume_file(o.output), &surface);
+  EXPECT_TRUE(v.valid) << format_text(v);
+  const nlohmann::json report = nlohmann::json::parse(test::read_text(o.report));
+  nlohmann::json tree, treeless;
+  for (const auto& step : report["steps"]) {
+    if (step["name"] == "face removals (tree)") tree = step["counts"];
+    if (step["name"] == "face removals (tree-less)") treeless = step["counts"];
+  }
+  ASSERT_FALSE(treeless.is_null());
+  EXPECT_EQ(treeless["faces left"].get<int64_t>(), 0);
+  if (comm.size() == 1) {
+    EXPECT_FALSE(treeless.contains("rounds per rank"));
+    return;
+  }
+  const auto rounds = treeless["rounds per rank"];
+  const auto left = treeless["faces left after ranks"].get<std::vector<int64_t>>();
+  ASSERT_FALSE(left.empty());
+  EXPECT_EQ(rounds.size(), left.size());
+  EXPECT_LE(left.size(), static_cast<size_t>(kTreelessRankRounds));
+  for (const auto& round : rounds) EXPECT_EQ(round.size(), static_cast<size_t>(comm.size()));
+  EXPECT_LT(left.front(), tree["faces left"].get<int64_t>());
+  EXPECT_GT(treeless["tets deleted"].get<int64_t>(), 0);
+}
 
 }  // namespace
 }  // namespace partet
