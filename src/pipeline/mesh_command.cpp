@@ -24,7 +24,6 @@
 #include "front/front.hpp"
 #include "front/gap_vertices.hpp"
 #include "front/initial_front.hpp"
-#include "front/treeless_removal.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"

@@ -1,7 +1,7 @@
-// tree_removal_step: the two passes on one rank; on P ranks, rounds of them
-// on every rank's copy of the front, the interfaces left by one round
-// spread over the ranks for the next, and what is left finished on rank 0
-// (see tree_removal_step.hpp).
+// tree_removal_step: the two passes on one rank; on P ranks, each pass in
+// rounds on every rank's copy of the front, the interfaces left by one
+// round spread over the ranks for the next, and what is left done by rank
+// 0 alone (see tree_removal_step.hpp).
 #include "pipeline/tree_removal_step.hpp"
 
 #include <algorithm>
@@ -17,29 +17,24 @@ namespace partet {
 
 namespace {
 
-// The shaped pass (with `shaped_memo`), then the plain one (with `memo`);
-// their counts summed. With `seeds` the shaped pass starts from those faces
-// and the plain one from those still alive and the faces the shaped pass
-// added; without, both start from every alive face.
+// One pass of the tree-supported removals taking targets of quality at
+// least `quality`, from `seeds` (every alive face when null).
+RemovalCounts one_pass(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank, double quality,
+                       RemovalMemo& memo, const std::vector<uint32_t>* seeds) {
+  RemovalOptions options;
+  options.rank = rank;
+  options.min_quality = quality;
+  return remove_faces_tree_supported(front, tree, root, mesh, options, seeds, &memo);
+}
+
+// The shaped pass (with `shaped_memo`), then the plain one (with `memo`),
+// over every alive face; their counts summed.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
-                         RemovalMemo& shaped_memo, RemovalMemo& memo, const std::vector<uint32_t>* seeds = nullptr) {
+                         RemovalMemo& shaped_memo, RemovalMemo& memo) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
-  RemovalOptions shaped;
-  shaped.rank = rank;
-  shaped.min_quality = kShapedRemovalQuality;
-  RemovalOptions plain;
-  plain.rank = rank;
-  const size_t slots = front.num_face_slots();
-  const RemovalCounts first = remove_faces_tree_supported(front, tree, root, mesh, shaped, seeds, &shaped_memo);
-  std::vector<uint32_t> next;
-  if (seeds) {
-    for (uint32_t f : *seeds)
-      if (front.alive(f)) next.push_back(f);
-    for (uint32_t f = static_cast<uint32_t>(slots); f < front.num_face_slots(); ++f)
-      if (front.alive(f)) next.push_back(f);
-  }
-  RemovalCounts n = remove_faces_tree_supported(front, tree, root, mesh, plain, seeds ? &next : nullptr, &memo);
+  const RemovalCounts first = one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shaped_memo, nullptr);
+  RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, memo, nullptr);
   n.tets += first.tets;
   n.passes += first.passes;
   n.checks += first.checks;
@@ -70,9 +65,10 @@ void merge_others(const Comm& comm, const std::vector<std::string>& images, Fron
   }
 }
 
-// This rank's failures in `memo` that still stand (standing_failures), in
-// capped and in full passes, as vertex triples: rank 0 skips those faces
-// in its finishing passes instead of failing them again.
+// This rank's failures in its plain passes' `memo` that still stand
+// (standing_failures), in capped and in full passes, as vertex triples:
+// rank 0 records them (take_failures) and the tree-less removals' first
+// pass skips those faces instead of failing them again.
 void put_failures(const Front& front, const RootCube& root, const RemovalMemo& memo, std::string& out) {
   for (const bool full : {false, true}) {
     std::vector<uint32_t> triples;
@@ -82,7 +78,7 @@ void put_failures(const Front& front, const RootCube& root, const RemovalMemo& m
   }
 }
 
-void take_failures(const std::string& image, size_t& pos, const Front& front, double min_quality, RemovalMemo& memo) {
+void take_failures(const std::string& image, size_t& pos, const Front& front, RemovalMemo& memo) {
   for (const bool full : {false, true}) {
     const std::vector<uint32_t> triples = get_array<uint32_t>(image, pos);
     std::vector<uint32_t> faces;
@@ -91,7 +87,7 @@ void take_failures(const std::string& image, size_t& pos, const Front& front, do
       PARTET_ASSERT(f != kNoIndex, "a failure another rank found is for a face not alive here");
       faces.push_back(f);
     }
-    record_failures(front, faces, full, min_quality, memo);
+    record_failures(front, faces, full, 0, memo);
   }
 }
 
@@ -105,59 +101,83 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
   RemovalMemo shaped_memo;  // the shaped passes' failures (rank 0's, for its finishing passes)
-  std::vector<uint32_t> seeds;  // on P ranks: the faces the last round left across the ranks
+  RemovalCounts n;  // rank 0's own passes over every leaf
   if (distributed) {
     PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
-    set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
     const size_t core_tets = mesh.num_tets();
     size_t my_tets = 0, my_checks = 0, my_skipped = 0;
-    double rank_s = 0, merge_s = 0, interface_s = 0;
+    double rank_s = 0, merge_s = 0, interface_s = 0, after_s = 0;
     ojson interfaces = ojson::array();
-    for (int round = 0;; ++round) {
-      // Rank 0 keeps what its passes learn for the passes that finish.
+    std::vector<uint32_t> seeds;  // the faces the last round left across the ranks
+    // The shaped pass, then the plain one, each over the whole front as on
+    // one rank: rounds on the ranks, then rank 0 alone on the faces the
+    // last round left across the ranks. Every rank ends each round with
+    // the same faces (the others' changes merged).
+    for (const bool shaped : {true, false}) {
+      RemovalMemo& m = shaped ? shaped_memo : memo;
+      const double quality = shaped ? kShapedRemovalQuality : 0;
+      set_leaf_owners(comm, *ranks.own, *ranks.separators, root, tree);
+      ojson phase = ojson::array();
+      for (int round = 0;; ++round) {
+        const Front::Snapshot start = front->snapshot();
+        Stopwatch clock;
+        const RemovalCounts mine =
+            one_pass(*front, tree, root, mesh, comm.rank(), quality, m, round == 0 ? nullptr : &seeds);
+        rank_s += clock.wall();
+        my_tets += mine.tets;
+        my_checks += mine.checks;
+        my_skipped += mine.skipped_checks;
+        passes += mine.passes;
+        if (shaped && round == 0) {
+          c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
+          c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
+        }
+        clock.restart();
+        merge_others(comm, comm.all_gather(changes_image(front->changes_since(start))), *front, tree);
+        merge_s += clock.wall();
+        // The fronts are now the same on every rank (as sets of faces): the
+        // faces no rank could remove for a leaf of another are the same too.
+        clock.restart();
+        const InterfaceFaces faces = interface_faces(*front, tree, root, RemovalOptions{});
+        phase.push_back(faces.faces.size());
+        seeds = faces.faces;
+        // Another round only while the interfaces shrink (the same faces
+        // would be cut the same way again).
+        const bool last = round == kInterfaceRounds || faces.faces.empty() ||
+                          (round > 0 && faces.faces.size() >= phase[phase.size() - 2].get<size_t>());
+        if (!last) reown_leaves_by_faces(comm, *front, faces.faces, faces.lowest, root, tree);
+        interface_s += clock.wall();
+        if (last) break;
+      }
+      interfaces.push_back(phase);
+      // Rank 0 alone on what is left across the ranks; the others take in
+      // its changes.
+      std::fill(tree.owner.begin(), tree.owner.end(), 0);
       const Front::Snapshot start = front->snapshot();
       Stopwatch clock;
-      const RemovalCounts mine =
-          two_passes(*front, tree, root, mesh, comm.rank(), shaped_memo, memo, round == 0 ? nullptr : &seeds);
-      rank_s += clock.wall();
-      my_tets += mine.tets;
-      my_checks += mine.checks;
-      my_skipped += mine.skipped_checks;
-      passes += mine.passes;
-      if (round == 0) {
-        c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
-        c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
+      if (root_rank) {
+        const RemovalCounts alone = one_pass(*front, tree, root, mesh, 0, quality, m, &seeds);
+        n.tets += alone.tets;
+        n.passes += alone.passes;
+        n.checks += alone.checks;
+        n.skipped_checks += alone.skipped_checks;
       }
-      const std::vector<std::string> images = comm.all_gather(changes_image(front->changes_since(start)));
-      clock.restart();
-      merge_others(comm, images, *front, tree);
-      merge_s += clock.wall();
-      // The fronts are now the same on every rank (as sets of faces): the
-      // faces no rank could remove for a leaf of another are the same too.
-      clock.restart();
-      const InterfaceFaces faces = interface_faces(*front, tree, root, RemovalOptions{});
-      interfaces.push_back(faces.faces.size());
-      seeds = faces.faces;
-      // Another round only while the interfaces shrink (the same faces
-      // would be cut the same way again).
-      if (round == kInterfaceRounds || faces.faces.empty() ||
-          (round > 0 && faces.faces.size() >= interfaces[interfaces.size() - 2].get<size_t>()))
-        break;
-      reown_leaves_by_faces(comm, *front, faces.faces, faces.lowest, root, tree);
-      interface_s += clock.wall();
+      after_s += clock.wall();
+      merge_others(comm, comm.all_gather(changes_image(root_rank ? front->changes_since(start) : Front::Changes{})),
+                   *front, tree);
     }
     c["tets per rank"] = comm.all_gather(static_cast<int64_t>(my_tets));
     c["rank s per rank"] = comm.all_gather(rank_s);
     c["merge s per rank"] = comm.all_gather(merge_s);
     c["interface faces after round"] = interfaces;
     c["interface s"] = interface_s;
+    c["rank 0 after s"] = after_s;
     tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_tets)));
     checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_checks)));
     skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_skipped)));
     std::string mine;
     if (!root_rank) {
       put_array(mine, mesh.tets.data() + 4 * core_tets, mesh.tets.size() - 4 * core_tets);
-      put_failures(*front, root, shaped_memo, mine);
       put_failures(*front, root, memo, mine);
     }
     const std::vector<std::string> images = comm.gather(mine, 0);
@@ -167,24 +187,18 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
       return ojson::object();
     }
     // The other ranks' tets join the mesh (their front changes already
-    // joined the front), and what their passes could not remove is not
-    // tried again while it stands.
+    // joined the front), and what their plain passes could not remove is
+    // not tried again by the tree-less removals while it stands.
     for (size_t r = 1; r < images.size(); ++r) {
       size_t pos = 0;
       const std::vector<uint32_t> theirs = get_array<uint32_t>(images[r], pos);
       mesh.tets.insert(mesh.tets.end(), theirs.begin(), theirs.end());
-      take_failures(images[r], pos, *front, kShapedRemovalQuality, shaped_memo);
-      take_failures(images[r], pos, *front, 0, memo);
+      take_failures(images[r], pos, *front, memo);
     }
-    std::fill(tree.owner.begin(), tree.owner.end(), 0);
+    n.faces_left = front->num_alive_faces();
+  } else {
+    n = two_passes(*front, tree, root, mesh, 0, shaped_memo, memo);
   }
-  Stopwatch finish;
-  // On P ranks the finishing passes start from the faces the last round
-  // left across the ranks: every other face was tried by a rank that owned
-  // its whole neighbourhood, and those whose failure no longer stands are
-  // tried again by the tree-less removals' first pass.
-  const RemovalCounts n =
-      two_passes(*front, tree, root, mesh, 0, shaped_memo, memo, distributed ? &seeds : nullptr);
   // Gap vertices no tet took are dropped: the tree-less removals place
   // their own where a cavity needs one, and a free vertex inside a cavity
   // would only block its fills.
@@ -192,10 +206,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   // The closed faces (most slots by now) go before the tree-less removals
   // allocate theirs.
   memo.renumber(front->compact());
-  if (distributed) {
-    c["tets on rank 0 after"] = n.tets;
-    c["rank 0 after s"] = finish.wall();
-  }
+  if (distributed) c["tets on rank 0 after"] = n.tets;
   c["tets"] = tets + n.tets;
   c["faces left"] = n.faces_left;
   c["passes"] = passes + n.passes;

@@ -4,29 +4,32 @@
 //    then one taking any valid tet, over the whole front;
 //  - P ranks: every rank holds the whole tree, core and initial front
 //    (gathered everywhere) and the leaves' owners (leaf_owners.hpp: the
-//    boundary partition's, the separators' for the other leaves); each
-//    rank runs the same two passes on its copy, making only the removals
-//    whose neighbourhood leaves are all its own (removals never
-//    communicate), so two ranks' tets never touch one leaf and are valid
-//    together. Every rank then merges the other ranks' front changes into
-//    its copy, in rank order (Front::merge: the front their tets would give
-//    if made again there), so that the copies hold the same faces again.
-//    The faces none could remove for a leaf of another rank (the
+//    boundary partition's, the separators' for the other leaves). The
+//    shaped pass, then the plain one, each runs over the whole front as on
+//    one rank, in rounds: each rank runs the pass on its copy, making only
+//    the removals whose neighbourhood leaves are all its own (removals
+//    never communicate), so two ranks' tets never touch one leaf and are
+//    valid together; then every rank merges the other ranks' front changes
+//    into its copy, in rank order (Front::merge: the front their tets would
+//    give if made again there), so that the copies hold the same faces
+//    again. The faces none could remove for a leaf of another rank (the
 //    interfaces along the cuts) are spread over the ranks by new owners
 //    (interface_owners.hpp: the paper's repartitioning of the face, edge
-//    and vertex interfaces, steps 5-9), and the ranks run the two passes
-//    again from those faces; up to kInterfaceRounds such rounds. Rank 0
-//    then appends the other ranks' tets to its mesh, takes every leaf as
-//    its own and runs the two passes over what is left: the faces near
-//    where the last cuts meet and those no rank could remove.
+//    and vertex interfaces, steps 5-9), and the ranks run the pass again
+//    from those faces, up to kInterfaceRounds times while the interfaces
+//    shrink; then rank 0 alone runs it from the faces still across the
+//    ranks, and the others take in its changes. At the end rank 0 appends
+//    the other ranks' tets to its mesh and records the failures their
+//    plain passes found that still stand (standing_failures), so that the
+//    tree-less removals do not try those faces again.
 // Afterwards, on rank 0, the gap vertices no tet took are dropped and the
 // front is compacted; the other ranks end with no front and an empty mesh.
 // The counts: the tets, faces left, passes and checks of the step; on P > 1
 // ranks also, per rank, the tets its passes made, the faces its copy had
 // left after the first round and how many of those it skipped for a leaf
 // of another rank (the faces of the other ranks' leaves among them), its
-// passes' and its merges' wall time; the interface faces after each round,
-// and the tets rank 0's finishing passes made.
+// passes' and its merges' wall time; per pass the interface faces after
+// each round, and the tets and time of rank 0's passes alone.
 #pragma once
 
 #include <memory>

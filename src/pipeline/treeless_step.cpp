@@ -3,6 +3,7 @@
 #include "pipeline/treeless_step.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <vector>
 
@@ -53,17 +54,12 @@ ojson counts_json(const TreelessCounts& n) {
   return c;
 }
 
-// The counts of `x` (tets, vertices, deletions, fills, cones, advances,
-// checks) added to `into`.
-void add_work(TreelessCounts& into, const TreelessCounts& x) {
-  into.tree_tets += x.tree_tets;
-  into.new_vertex_tets += x.new_vertex_tets;
-  into.vertices_added += x.vertices_added;
-  into.tets_deleted += x.tets_deleted;
-  into.star_fills += x.star_fills;
-  into.partial_cones += x.partial_cones;
-  into.advances += x.advances;
-  into.checks += x.checks;
+// The work counts of the tree-less removals (tets, vertices, deletions,
+// fills, cones, advances, checks; not rounds, faces left or how they
+// ended), as one list: what the ranks and rank 0 add up.
+std::array<size_t*, 8> work_of(TreelessCounts& n) {
+  return {&n.tree_tets,  &n.new_vertex_tets, &n.vertices_added, &n.tets_deleted,
+          &n.star_fills, &n.partial_cones,   &n.advances,       &n.checks};
 }
 
 // Per tet of `before` (the tets when the ranks' rounds started): its index
@@ -247,20 +243,19 @@ ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree&
     const Front::Snapshot start = front->snapshot();
     RemovalOptions mine_options;
     mine_options.rank = comm.rank();
+    mine_options.stall_rounds = kRankStallRounds;
     Stopwatch clock;
     const TreelessCounts mine =
         run_treeless_rounds(*front, tree, root, mesh, mine_options, memo, TreelessStrategy::kDefault);
     const std::vector<double> seconds = comm.all_gather(clock.wall());
     for (size_t r = 0; r < rank_s.size(); ++r) rank_s[r] += seconds[r];
     rounds.push_back(comm.all_gather(static_cast<int64_t>(mine.rounds)));
-    std::vector<int64_t> work = {static_cast<int64_t>(mine.tree_tets),     static_cast<int64_t>(mine.new_vertex_tets),
-                                 static_cast<int64_t>(mine.vertices_added), static_cast<int64_t>(mine.tets_deleted),
-                                 static_cast<int64_t>(mine.star_fills),     static_cast<int64_t>(mine.partial_cones),
-                                 static_cast<int64_t>(mine.advances),       static_cast<int64_t>(mine.checks)};
+    TreelessCounts done = mine;
+    std::vector<int64_t> work;
+    for (size_t* count : work_of(done)) work.push_back(static_cast<int64_t>(*count));
     comm.sum(work.data(), work.size());
-    size_t* fields[] = {&total.tree_tets,  &total.new_vertex_tets, &total.vertices_added, &total.tets_deleted,
-                        &total.star_fills, &total.partial_cones,   &total.advances,       &total.checks};
-    for (size_t k = 0; k < work.size(); ++k) *fields[k] += static_cast<size_t>(work[k]);
+    const auto into = work_of(total);
+    for (size_t k = 0; k < work.size(); ++k) *into[k] += static_cast<size_t>(work[k]);
     const std::vector<std::string> images =
         comm.gather(root_rank ? std::string() : work_image(*front, first_new, before, mesh, start), 0);
     if (root_rank) {
@@ -291,7 +286,8 @@ ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree&
   TreelessCounts rest;
   rest.faces_left_by_attempt = {0};
   if (front->num_alive_faces() > 0) rest = remove_faces_treeless(*front, tree, root, mesh, {}, &memo);
-  add_work(rest, total);
+  const auto into = work_of(rest), from = work_of(total);
+  for (size_t k = 0; k < into.size(); ++k) *into[k] += *from[k];
   note = treeless_ending(rest);
   c.update(counts_json(rest));
   return c;

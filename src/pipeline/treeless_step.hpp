@@ -41,6 +41,11 @@ namespace partet {
 
 // Rounds of the tree-less removals on the ranks before rank 0 finishes.
 constexpr int kTreelessRankRounds = 3;
+// The ranks' rounds stop after this many rounds in a row without a smaller
+// front (RemovalOptions::stall_rounds; rank 0's own pass afterwards keeps
+// the default): a rank that churns at the edge of what it owns leaves that
+// to rank 0 sooner.
+constexpr size_t kRankStallRounds = 16;
 
 // Collective. `initial` is the initial front (the same on every rank): the
 // vertices of the front and of the mesh, whose numbering the tree-supported
