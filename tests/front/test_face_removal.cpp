@@ -274,6 +274,17 @@ TEST(FrontRemoval, RanksFrontChangesMergeAsTheirTetsReplay) {
   expect_valid(m, out0, rest.faces_left, "merged");
 }
 
+// Calls with `memo` until one makes no tet (the last pass of a call may
+// still make a few, after some faces failed); that call's counts.
+RemovalCounts remove_until_stuck(Meshing& m, Front& front, TetMesh& out, RemovalMemo& memo) {
+  RemovalCounts last;
+  for (int call = 0; call < 100; ++call) {
+    last = remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
+    if (last.tets == 0) break;
+  }
+  return last;
+}
+
 TEST(FrontRemoval, MemoSkipsUnchangedNeighbourhoods) {
   size_t stuck_inputs = 0;
   for (const char* name : {"joint.off", "pipe.off", "spool.off"}) {
@@ -282,13 +293,7 @@ TEST(FrontRemoval, MemoSkipsUnchangedNeighbourhoods) {
     Front front(m.initial, m.tree, m.root);
     TetMesh out = m.core.mesh;
     RemovalMemo memo;
-    // Calls until one makes no tet (the last pass of a call may still make
-    // a few, after some faces failed).
-    RemovalCounts first;
-    for (int call = 0; call < 100; ++call) {
-      first = remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
-      if (first.tets == 0) break;
-    }
+    const RemovalCounts first = remove_until_stuck(m, front, out, memo);
     EXPECT_EQ(first.tets, 0u) << name;
     if (first.faces_left == 0) continue;
     ++stuck_inputs;
@@ -323,8 +328,7 @@ TEST(FrontRemoval, StandingFailuresCarryOverToACopy) {
     Front front(m.initial, m.tree, m.root);
     TetMesh out = m.core.mesh;
     RemovalMemo memo;
-    for (int call = 0; call < 100; ++call)
-      if (remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo).tets == 0) break;
+    remove_until_stuck(m, front, out, memo);
     if (front.num_alive_faces() == 0) continue;
     ++stuck_inputs;
     // Every face left failed a full pass and nothing changed since.
