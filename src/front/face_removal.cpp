@@ -393,6 +393,15 @@ void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f,
   }
 }
 
+void removal_neighbourhood_leaves(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
+                                  std::vector<size_t>& leaves) {
+  double lo[3], hi[3];
+  removal_neighbourhood(front, root, f, options, lo, hi);
+  uint32_t glo[3], ghi[3];
+  grid_range(root, lo, hi, glo, ghi);
+  front.query().leaves_in_range(glo, ghi, leaves);
+}
+
 std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root, const RemovalOptions& options,
                                         const RemovalMemo& memo, bool full) {
   const std::vector<uint32_t>& failed_at = full ? memo.failed_full_at : memo.failed_capped_at;
@@ -400,11 +409,7 @@ std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root
   std::vector<size_t> leaves;
   for (uint32_t f = 0; f < front.num_face_slots() && f < failed_at.size(); ++f) {
     if (!front.alive(f) || failed_at[f] == kNeverFailed) continue;
-    double lo[3], hi[3];
-    removal_neighbourhood(front, root, f, options, lo, hi);
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    front.query().leaves_in_range(glo, ghi, leaves);
+    removal_neighbourhood_leaves(front, root, f, options, leaves);
     if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at[f]; }))
       faces.push_back(f);
   }

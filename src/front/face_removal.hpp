@@ -125,6 +125,10 @@ struct RemovalCounts {
 // The neighbourhood box of face f (above), clipped to the root cube.
 void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
                            double* lo, double* hi);
+// The leaves over that box (replacing `leaves`): those a removal on f reads
+// and writes, and whose owners decide whether a rank may make it.
+void removal_neighbourhood_leaves(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
+                                  std::vector<size_t>& leaves);
 
 // The alive faces whose latest failure `memo` holds (in a full pass with
 // `full`, else in a capped one) still stands: none of their neighbourhood

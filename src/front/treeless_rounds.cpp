@@ -74,7 +74,7 @@ class TreelessRemover {
   // growth there may touch. The rounds leave such a component alone (the
   // ranks that share it could only churn at its cut; rank 0 closes it
   // afterwards). Always true when this rank owns every leaf.
-  bool own_component(const std::vector<uint32_t>& faces);
+  bool own_component(std::vector<uint32_t>::const_iterator first, std::vector<uint32_t>::const_iterator last);
   bool valid_tet(uint32_t f, uint32_t v);
   bool sees_all(const std::vector<uint32_t>& faces, const double* q) const;
   // Cones the faces that see q to a new vertex at q where valid; returns
@@ -234,16 +234,17 @@ bool TreelessRemover::own_leaves_around(const double* const* points, int n) {
   return true;
 }
 
-bool TreelessRemover::own_component(const std::vector<uint32_t>& faces) {
+bool TreelessRemover::own_component(std::vector<uint32_t>::const_iterator first,
+                                    std::vector<uint32_t>::const_iterator last) {
   if (!shared_) return true;
   double lo[3], hi[3];
-  std::copy_n(front_.point(front_.face(faces[0])[0]), 3, lo);
+  std::copy_n(front_.point(front_.face(*first)[0]), 3, lo);
   std::copy_n(lo, 3, hi);
-  for (uint32_t f : faces)
+  for (auto it = first; it != last; ++it)
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], front_.point(front_.face(f)[i])[k]);
-        hi[k] = std::max(hi[k], front_.point(front_.face(f)[i])[k]);
+        lo[k] = std::min(lo[k], front_.point(front_.face(*it)[i])[k]);
+        hi[k] = std::max(hi[k], front_.point(front_.face(*it)[i])[k]);
       }
   const double margin = 0.5 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   for (int k = 0; k < 3; ++k) {
@@ -633,10 +634,9 @@ TreelessCounts TreelessRemover::run() {
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {
       const auto first = components_.begin() + static_cast<ptrdiff_t>(component_first_[i]);
       const auto last = components_.begin() + static_cast<ptrdiff_t>(component_first_[i + 1]);
-      std::vector<uint32_t> component(first, last);
-      if (!own_component(component)) continue;
-      if (component.size() <= max_cavity)
-        cavities.push_back(std::move(component));
+      if (!own_component(first, last)) continue;
+      if (last - first <= static_cast<ptrdiff_t>(max_cavity))
+        cavities.emplace_back(first, last);
       else
         stuck.insert(stuck.end(), first, last);
     }

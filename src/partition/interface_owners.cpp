@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include "octree/range_query.hpp"
 #include "partition/boundary_partition.hpp"
 #include "partition/leaf_owners.hpp"
 #include "partition/recursive_bisection.hpp"
@@ -16,11 +15,7 @@ InterfaceFaces interface_faces(const Front& front, const LinearOctree& tree, con
   std::vector<size_t> leaves;
   for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
     if (!front.alive(f)) continue;
-    double lo[3], hi[3];
-    removal_neighbourhood(front, root, f, options, lo, hi);
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    front.query().leaves_in_range(glo, ghi, leaves);
+    removal_neighbourhood_leaves(front, root, f, options, leaves);
     int32_t low = tree.owner[leaves.front()], high = low;
     for (size_t leaf : leaves) {
       low = std::min(low, tree.owner[leaf]);

@@ -27,6 +27,15 @@ RemovalCounts one_pass(Front& front, LinearOctree& tree, const RootCube& root, T
   return remove_faces_tree_supported(front, tree, root, mesh, options, seeds, &memo);
 }
 
+// The work counts of `x` (tets, passes, checks, skipped checks) added to
+// `into`.
+void add_work(RemovalCounts& into, const RemovalCounts& x) {
+  into.tets += x.tets;
+  into.passes += x.passes;
+  into.checks += x.checks;
+  into.skipped_checks += x.skipped_checks;
+}
+
 // The shaped pass (with `shaped_memo`), then the plain one (with `memo`),
 // over every alive face; their counts summed.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
@@ -35,10 +44,7 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
   // nearly flat ones a front may need only where nothing better was found.
   const RemovalCounts first = one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shaped_memo, nullptr);
   RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, memo, nullptr);
-  n.tets += first.tets;
-  n.passes += first.passes;
-  n.checks += first.checks;
-  n.skipped_checks += first.skipped_checks;
+  add_work(n, first);
   return n;
 }
 
@@ -100,12 +106,12 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   ojson c;
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
-  RemovalMemo shaped_memo;  // the shaped passes' failures (rank 0's, for its finishing passes)
+  RemovalMemo shaped_memo;  // the shaped passes' failures (this rank's)
   RemovalCounts n;  // rank 0's own passes over every leaf
   if (distributed) {
     PARTET_ASSERT(ranks.own && ranks.separators, "the ranks' leaves are needed on P > 1 ranks");
     const size_t core_tets = mesh.num_tets();
-    size_t my_tets = 0, my_checks = 0, my_skipped = 0;
+    RemovalCounts ranks_work;  // this rank's passes in the rounds
     double rank_s = 0, merge_s = 0, interface_s = 0, after_s = 0;
     ojson interfaces = ojson::array();
     std::vector<uint32_t> seeds;  // the faces the last round left across the ranks
@@ -124,10 +130,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
         const RemovalCounts mine =
             one_pass(*front, tree, root, mesh, comm.rank(), quality, m, round == 0 ? nullptr : &seeds);
         rank_s += clock.wall();
-        my_tets += mine.tets;
-        my_checks += mine.checks;
-        my_skipped += mine.skipped_checks;
-        passes += mine.passes;
+        add_work(ranks_work, mine);
         if (shaped && round == 0) {
           c["faces left per rank"] = comm.all_gather(static_cast<int64_t>(mine.faces_left));
           c["foreign faces per rank"] = comm.all_gather(static_cast<int64_t>(mine.foreign_faces));
@@ -155,26 +158,21 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
       std::fill(tree.owner.begin(), tree.owner.end(), 0);
       const Front::Snapshot start = front->snapshot();
       Stopwatch clock;
-      if (root_rank) {
-        const RemovalCounts alone = one_pass(*front, tree, root, mesh, 0, quality, m, &seeds);
-        n.tets += alone.tets;
-        n.passes += alone.passes;
-        n.checks += alone.checks;
-        n.skipped_checks += alone.skipped_checks;
-      }
+      if (root_rank) add_work(n, one_pass(*front, tree, root, mesh, 0, quality, m, &seeds));
       after_s += clock.wall();
       merge_others(comm, comm.all_gather(changes_image(root_rank ? front->changes_since(start) : Front::Changes{})),
                    *front, tree);
     }
-    c["tets per rank"] = comm.all_gather(static_cast<int64_t>(my_tets));
+    c["tets per rank"] = comm.all_gather(static_cast<int64_t>(ranks_work.tets));
     c["rank s per rank"] = comm.all_gather(rank_s);
     c["merge s per rank"] = comm.all_gather(merge_s);
     c["interface faces after round"] = interfaces;
     c["interface s"] = interface_s;
     c["rank 0 after s"] = after_s;
-    tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_tets)));
-    checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_checks)));
-    skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(my_skipped)));
+    tets = static_cast<size_t>(comm.sum(static_cast<int64_t>(ranks_work.tets)));
+    passes = ranks_work.passes;
+    checks = static_cast<size_t>(comm.sum(static_cast<int64_t>(ranks_work.checks)));
+    skipped = static_cast<size_t>(comm.sum(static_cast<int64_t>(ranks_work.skipped_checks)));
     std::string mine;
     if (!root_rank) {
       put_array(mine, mesh.tets.data() + 4 * core_tets, mesh.tets.size() - 4 * core_tets);
