@@ -49,6 +49,9 @@ constexpr double kTight = 2;
 // tets, reached a few at a time.
 constexpr int kRiseRounds = 48;
 constexpr size_t kRiseTets = 384;
+// Step 5's points: these shares of the way from a corner to the deepest
+// point of its star's kernel.
+constexpr double kCornerShares[] = {1.0 / 4, 1.0 / 16, 1.0 / 64, 1.0 / 256};
 
 // `items` sorted, duplicates dropped: membership by binary search (a
 // cavity around a tet's four vertices has about 70 tets).
@@ -354,6 +357,37 @@ bool grow_cavity(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& sc
   return false;
 }
 
+// Step 5 (for the mesh's worst tet): each corner of t on an open face, its
+// star as the cavity, the point a share of the way from the corner to the
+// deepest point of the star's kernel (the kernel is convex and the corner
+// bounds it, so every point between them sees the star's outer faces). A
+// cap, an input triangle with an angle near 180 degrees, leaves its obtuse
+// corner a tiny height h above its long edge: every tet on the cap with an
+// apex far from that corner has an angle of about h over the long edge's
+// half length (u r1: 0.0675 degrees, on two caps, in every peer's mesh
+// too); a new vertex a few h from the corner gives the cap's tet moderate
+// angles and the tets on the corner's other surface triangles angles of
+// its distance over their size, and smoothing then places it.
+bool near_boundary_corner(TetTopology& topo, uint32_t t, double bar, SmoothingScratch& scratch, InsertionRule rule) {
+  uint32_t corners[4];
+  std::copy_n(topo.tet(t), 4, corners);
+  std::vector<uint32_t> star;
+  for (uint32_t corner : corners) {
+    topo.vertex_star(corner, star);
+    if (!on_open_face(topo, corner, star)) continue;
+    const KernelPoint deep = deepest_kernel_point(outer_faces(topo, star));
+    if (!deep.found || !(deep.depth > 0)) continue;
+    const double* at = topo.point(corner);
+    const double c[3] = {at[0], at[1], at[2]};  // a trial's new vertex may move the points
+    for (double share : kCornerShares) {
+      double p[3];
+      for (int i = 0; i < 3; ++i) p[i] = c[i] + share * (deep.point[i] - c[i]);
+      if (try_cavity(topo, star, p, bar, scratch, rule)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t> tets) {
@@ -394,7 +428,7 @@ void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
 
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch, InsertionRule rule,
-                   CavityGrowth* growth) {
+                   CavityGrowth* growth, bool near_corners) {
   const uint32_t* v = topo.tet(t);
   double centroid[3];
   for (int i = 0; i < 3; ++i)
@@ -439,7 +473,8 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       const KernelPoint deep = deepest_kernel_point(outer_faces(topo, wider));
       if (deep.found && deep.depth > 0 && try_cavity(topo, wider, deep.point, bar, scratch, rule, true)) return true;
     }
-    return growth && grow_cavity(topo, t, bar, scratch, rule, *growth);
+    if (growth && grow_cavity(topo, t, bar, scratch, rule, *growth)) return true;
+    return near_corners && rule == InsertionRule::kWorstFirst && near_boundary_corner(topo, t, bar, scratch, rule);
   }
   return try_cavity(topo, {t}, centroid, bar, scratch, rule);
 }

@@ -389,7 +389,7 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
     }
     if (!changed && options.insert_vertices &&
         insert_vertex(topo, worst, target, scratch, InsertionRule::kWorstFirst,
-                      options.grow_cavities ? &growth : nullptr)) {
+                      options.grow_cavities ? &growth : nullptr, options.corner_vertices)) {
       ++stats.vertices_inserted;
       changed = true;
     }

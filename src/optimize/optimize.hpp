@@ -47,6 +47,9 @@ struct OptimizeOptions {
   // In the worst-tet rounds, when that fails too, move the free vertices of
   // the near-worst tets around it together (joint_smoothing.hpp).
   bool smooth_jointly = true;
+  // In the worst-tet rounds, try a vertex near each boundary corner of the
+  // worst tet, in the corner's star (insertion.hpp, step 5: caps).
+  bool corner_vertices = true;
   // In the worst-tet rounds, when the insertion's fixed cavities fail,
   // grow one toward room (insertion.hpp, step 6).
   bool grow_cavities = true;
