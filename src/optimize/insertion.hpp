@@ -45,11 +45,13 @@
 //     tets on the corner's other surface triangles about its distance over
 //     their size (u r1, two caps of 179.85 degrees: 0.0675 -> 0.40
 //     degrees, where TetGen -q and Gmsh HXT leave 0.0675 and Netgen 0.0684;
-//     the smallest angle rose on 14 of 61 r0 and r1 inputs by more than
-//     0.1 degree, lever r1 0.020 -> 0.106, handle r1 1.03 -> 1.75, pinion
-//     r1 1.36 -> 1.80, and fell on elephant r0, 26.9 -> 25.3, where the
-//     passes diverge). Trading a tet under 1 degree, it brings slivers
-//     (u r1: 0.69 -> 4.0 % of the tets under 10 degrees; the peers 26-64 %);
+//     over the 64 r0 and r1 inputs the smallest angle rose on 14, lever r1
+//     0.020 -> 0.268, joint r0 1.16 -> 1.80, pinion r1 1.36 -> 1.80, and
+//     fell on 2 where the passes diverge, fandisk r1 25.67 -> 25.59). It
+//     comes after step 6, whose grown cavities lift a flat sheet at once
+//     (tried before it, it spent the rounds on the sheet's tets one by
+//     one). Trading a tet under 1 degree, it brings slivers (u r1: 0.69 ->
+//     4.0 % of the tets under 10 degrees; the peers 26-64 %);
 //  6. with the frozen flags (for the mesh's worst tet), a cavity grown
 //     from the tet and its face neighbours toward a point with room: the
 //     deepest point of its kernel, the cavity taking in the tets behind
