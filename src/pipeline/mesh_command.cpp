@@ -75,6 +75,7 @@ ojson options_json(const MeshOptions& o) {
   j["partitioner"] = bisection_name(o.partitioner);
   j["gap_vertices"] = o.gap_vertices;
   j["treeless"] = o.treeless;
+  j["treeless_on_ranks"] = o.treeless_on_ranks;
   j["optimize"] = o.optimize_passes;
   j["quality_target"] = o.quality_target;
   j["ascii"] = o.ascii;
@@ -535,7 +536,8 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         report.run_step("face removals (tree-less)", [&] {
-          return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note);
+          return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note,
+                               options.treeless_on_ranks);
         });
       }
       if (front) left = front_left(*front);

@@ -30,6 +30,10 @@ struct MeshOptions {
   double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone
   bool gap_vertices = true;   // --no-gap-vertices: no vertices at leaf centres in the gap (gap_vertices.hpp)
   bool treeless = true;       // --no-treeless: stop after the tree-supported removals
+  // --treeless-on-ranks: on P > 1 ranks the tree-less removals run on every
+  // rank in rounds before rank 0 finishes (treeless_step.hpp); else rank 0
+  // makes them alone.
+  bool treeless_on_ranks = false;
   bool keep_partial = false;  // --keep-partial: on exit 3, write the tets made and the front left
   bool ascii = false;     // --ascii: text Gmsh output
   bool quiet = false;     // --quiet: errors only

@@ -211,9 +211,12 @@ void take_work(const std::vector<std::string>& images, size_t first_new, const s
 }  // namespace
 
 ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
-                    TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note) {
+                    TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note,
+                    bool on_ranks) {
   const bool root_rank = comm.rank() == 0;
-  if (comm.size() == 1) {
+  if (comm.size() == 1 || !on_ranks) {
+    if (!root_rank) return ojson::object();
+    std::fill(tree.owner.begin(), tree.owner.end(), 0);
     const TreelessCounts n = remove_faces_treeless(*front, tree, root, mesh, {}, &memo);
     note = treeless_ending(n);
     return counts_json(n);

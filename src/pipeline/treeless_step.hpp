@@ -1,8 +1,11 @@
 // The pipeline's tree-less face removals (paper §4.1 step 10) on one rank
 // or on P (treeless_removal.hpp for the removals themselves):
 //  - one rank: remove_faces_treeless on the front the tree-supported
-//    removals left, with their memo;
-//  - P ranks, in rounds: rank 0 sends every rank the front (its vertices
+//    removals left, with their memo; on P ranks by default the same on
+//    rank 0, with every leaf its own: on 2 ranks that measured faster
+//    than the rounds below (docs/decisions.md, "Tree-less removals on rank
+//    0 alone by default");
+//  - P ranks with `on_ranks` (--treeless-on-ranks), in rounds: rank 0 sends every rank the front (its vertices
 //    beyond the initial front's, its faces in slot order), the mesh's tets
 //    and the memo's failures that still stand (standing_failures), and
 //    every rank builds the same front from them. The leaves are owned
@@ -50,8 +53,10 @@ constexpr size_t kRankStallRounds = 16;
 // Collective. `initial` is the initial front (the same on every rank): the
 // vertices of the front and of the mesh, whose numbering the tree-supported
 // removals kept. `front`, `mesh` and `memo` are rank 0's after the
-// tree-supported removals (null, empty and empty elsewhere).
+// tree-supported removals (null, empty and empty elsewhere). Without
+// `on_ranks` (or on one rank) rank 0 makes the removals alone.
 ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
-                    TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note);
+                    TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note,
+                    bool on_ranks);
 
 }  // namespace partet

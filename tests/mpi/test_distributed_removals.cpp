@@ -147,10 +147,11 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, DistributedRemovals,
                          });
 
 // The tree-less removals on the ranks (spool: a CAD part whose tree-less
-// removals delete thousands of tets): the mesh is valid against the
-// surface and, on P > 1 ranks, the ranks' first round closes part of the
-// front the tree-supported removals left, every round reporting each
-// rank's rounds; a second run gives the same mesh.
+// removals delete thousands of tets; --treeless-on-ranks): the mesh is
+// valid against the surface and, on P > 1 ranks, the ranks' first round
+// closes part of the front the tree-supported removals left, every round
+// reporting each rank's rounds; a second run gives the same mesh. By
+// default rank 0 makes them alone: a valid mesh, no rounds on the ranks.
 TEST(DistributedTreeless, TheRanksCloseCavitiesAndTheMeshIsValid) {
   const Comm comm = Comm::world();
   const Log log(comm.rank(), false, false);
@@ -165,7 +166,13 @@ TEST(DistributedTreeless, TheRanksCloseCavitiesAndTheMeshIsValid) {
   o.output = dir + "/mesh.vtu";
   o.report = dir + "/report.json";
   o.quiet = true;
+  o.treeless_on_ranks = true;
   ASSERT_EQ(run_mesh(o, comm, log), kExitOk);
+  MeshOptions alone = o;
+  alone.treeless_on_ranks = false;
+  alone.output = dir + "/alone.vtu";
+  alone.report = dir + "/alone.json";
+  ASSERT_EQ(run_mesh(alone, comm, log), kExitOk);
   MeshOptions again = o;
   again.output = dir + "/again.vtu";
   again.report = "";
@@ -175,14 +182,22 @@ TEST(DistributedTreeless, TheRanksCloseCavitiesAndTheMeshIsValid) {
   const SurfaceMesh surface = read_surface_file(o.input);
   const ValidationResult v = validate_mesh(read_volume_file(o.output), &surface);
   EXPECT_TRUE(v.valid) << format_text(v);
-  const nlohmann::json report = nlohmann::json::parse(test::read_text(o.report));
-  nlohmann::json tree, treeless;
-  for (const auto& step : report["steps"]) {
-    if (step["name"] == "face removals (tree)") tree = step["counts"];
-    if (step["name"] == "face removals (tree-less)") treeless = step["counts"];
-  }
+  const auto counts_of = [](const std::string& path, const char* name) {
+    const nlohmann::json report = nlohmann::json::parse(test::read_text(path));
+    for (const auto& step : report["steps"])
+      if (step["name"] == name) return step["counts"];
+    return nlohmann::json();
+  };
+  const nlohmann::json tree = counts_of(o.report, "face removals (tree)");
+  const nlohmann::json treeless = counts_of(o.report, "face removals (tree-less)");
   ASSERT_FALSE(treeless.is_null());
   EXPECT_EQ(treeless["faces left"].get<int64_t>(), 0);
+  const ValidationResult by_rank_0 = validate_mesh(read_volume_file(alone.output), &surface);
+  EXPECT_TRUE(by_rank_0.valid) << format_text(by_rank_0);
+  const nlohmann::json rank_0_alone = counts_of(alone.report, "face removals (tree-less)");
+  ASSERT_FALSE(rank_0_alone.is_null());
+  EXPECT_EQ(rank_0_alone["faces left"].get<int64_t>(), 0);
+  EXPECT_FALSE(rank_0_alone.contains("rounds per rank"));
   if (comm.size() == 1) {
     EXPECT_FALSE(treeless.contains("rounds per rank"));
     return;
