@@ -56,9 +56,12 @@ OptimizeStats sum_over_ranks(const Comm& comm, OptimizeStats x) {
   return out;
 }
 
-// The band pass on rank 0 (see the header, step 4): returns its stats.
-OptimizeStats optimize_band(TetMesh& mesh, const std::vector<int32_t>& part_of_tet, const OptimizeOptions& options,
-                            size_t& band_tets) {
+// The band (see the header, step 4) of a mesh cut into the parts of
+// `part_of_tet` (the ranks' parts, then the band's shares): the tets with
+// a vertex on a cut or on a tet under kBandAngle degrees, grown by one
+// ring. Per tet, 0 in the band, -1 not; `band_tets` is increased by its
+// size.
+std::vector<int32_t> band_of(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet, size_t& band_tets) {
   std::vector<uint8_t> marked = cut_vertices(mesh, part_of_tet);
   for (size_t t = 0; t < mesh.num_tets(); ++t) {
     const uint32_t* v = &mesh.tets[4 * t];
@@ -68,18 +71,64 @@ OptimizeStats optimize_band(TetMesh& mesh, const std::vector<int32_t>& part_of_t
   }
   const std::vector<uint8_t> band = band_around(mesh, std::move(marked), 1);
   std::vector<int32_t> in_band(mesh.num_tets());
-  band_tets = 0;
   for (size_t t = 0; t < mesh.num_tets(); ++t) {
     in_band[t] = band[t] ? 0 : -1;
     band_tets += band[t];
   }
-  std::vector<MeshPart> parts = split_mesh(mesh, in_band, 1);
-  OptimizeOptions band_options = options;
-  band_options.passes = std::min(options.passes, kBandPasses);
-  band_options.set_aside_stuck_on_frozen = true;
-  const OptimizeStats n = optimize_mesh(parts[0].mesh, band_options, &parts[0].on_cut);
-  join_parts(mesh, in_band, parts);
-  return n;
+  return in_band;
+}
+
+// The band's options: at most kBandPasses passes, worst tets stuck on a
+// frozen vertex set aside.
+OptimizeOptions band_options(const OptimizeOptions& options) {
+  OptimizeOptions out = options;
+  out.passes = std::min(options.passes, kBandPasses);
+  out.set_aside_stuck_on_frozen = true;
+  return out;
+}
+
+// `part`'s cut flags or'ed with `frozen` (per vertex of the mesh it was
+// split from; vertices beyond it are free).
+void freeze_also(MeshPart& part, const std::vector<uint8_t>& frozen) {
+  for (size_t i = 0; i < part.whole.size(); ++i)
+    if (part.whole[i] < frozen.size() && frozen[part.whole[i]]) part.on_cut[i] = 1;
+}
+
+// Step 4 (see the header): the band cut into P shares, optimized on the
+// ranks, and what lies along the shares' cuts on rank 0. Collective;
+// `mesh` and `part_of_tet` are rank 0's. Returns every rank's counts
+// summed, with rank 0's last pass.
+OptimizeStats optimize_band(const Comm& comm, TetMesh& mesh, const std::vector<int32_t>& part_of_tet,
+                            const OptimizeOptions& options, DistributedOptimizeStats& out) {
+  const bool root = comm.rank() == 0;
+  const OptimizeOptions band = band_options(options);
+  std::vector<int32_t> in_band;
+  MeshPart whole_band;
+  if (root) {
+    in_band = band_of(mesh, part_of_tet, out.band_tets);
+    whole_band = std::move(split_mesh(mesh, in_band, 1)[0]);
+  }
+  const std::vector<int32_t> share_of = partition_tets(comm, whole_band.mesh);
+  std::vector<MeshPart> shares;
+  if (root) {
+    shares = split_mesh(whole_band.mesh, share_of, comm.size());
+    for (MeshPart& share : shares) freeze_also(share, whole_band.on_cut);
+  }
+  MeshPart own = scatter_parts(comm, shares);
+  const OptimizeStats mine = own.mesh.num_tets() > 0 ? optimize_mesh(own.mesh, band, &own.on_cut) : OptimizeStats{};
+  const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
+  OptimizeStats total = sum_over_ranks(comm, mine);
+  if (!root) return total;
+  for (size_t r = 0; r < shares.size(); ++r) shares[r].mesh = deserialize_part(optimized[r]);
+  const std::vector<int32_t> share_now = join_parts(whole_band.mesh, share_of, shares);
+  shares.clear();
+  const std::vector<int32_t> in_crossing = band_of(whole_band.mesh, share_now, out.crossing_tets);
+  std::vector<MeshPart> crossing = split_mesh(whole_band.mesh, in_crossing, 1);
+  freeze_also(crossing[0], whole_band.on_cut);
+  if (crossing[0].mesh.num_tets() > 0) add_counts(total, optimize_mesh(crossing[0].mesh, band, &crossing[0].on_cut));
+  join_parts(whole_band.mesh, in_crossing, crossing);
+  join_parts(mesh, in_band, {whole_band});
+  return total;
 }
 
 }  // namespace
@@ -112,13 +161,16 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
   const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
   out.totals = sum_over_ranks(comm, mine);
   out.totals.before = before;
+  std::vector<int32_t> joined;
   if (root) {
     for (size_t r = 0; r < parts.size(); ++r) parts[r].mesh = deserialize_part(optimized[r]);
-    const std::vector<int32_t> joined = join_parts(mesh, part_of_tet, parts);
+    joined = join_parts(mesh, part_of_tet, parts);
     parts.clear();
-    const double band_start = clock.wall();
-    add_counts(out.totals, optimize_band(mesh, joined, options, out.band_tets));
-    out.band_seconds = clock.wall() - band_start;
+  }
+  const double band_start = clock.wall();
+  add_counts(out.totals, optimize_band(comm, mesh, joined, options, out));
+  out.band_seconds = clock.wall() - band_start;
+  if (root) {
     drop_unused_vertices(mesh);
     out.totals.after = measure_quality(mesh);
   }

@@ -45,6 +45,7 @@ ojson optimize_step(const Comm& comm, TetMesh& mesh, const OptimizeOptions& opti
     c["tets per rank"] = d.tets_per_rank;
     c["part s per rank"] = d.part_seconds;
     c["band tets"] = d.band_tets;
+    c["crossing tets"] = d.crossing_tets;
     c["band s"] = d.band_seconds;
   }
   c["tets"] = mesh.num_tets();
