@@ -95,7 +95,7 @@ void freeze_also(MeshPart& part, const std::vector<uint8_t>& frozen) {
 }
 
 // Step 4 (see the header): the band cut into P shares, optimized on the
-// ranks, and what lies along the shares' cuts on rank 0. Collective;
+// ranks, and the shares' own band (band_of again) on rank 0. Collective;
 // `mesh` and `part_of_tet` are rank 0's. Returns every rank's counts
 // summed, with rank 0's last pass.
 OptimizeStats optimize_band(const Comm& comm, TetMesh& mesh, const std::vector<int32_t>& part_of_tet,
