@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -24,21 +23,13 @@
 #include "parallel/comm.hpp"
 #include "parallel/distributed_optimize.hpp"
 #include "pipeline/mesh_command.hpp"
+#include "mpi/mpi_scratch.hpp"
 #include "test_support.hpp"
 
 namespace partet {
 namespace {
 
-// A scratch directory per rank count, made by rank 0 (all ranks wait).
-std::string shared_dir(const Comm& comm, const std::string& name) {
-  const std::string dir = "/tmp/partet_mpi_" + name + "_" + std::to_string(comm.size());
-  if (comm.rank() == 0) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  comm.barrier();
-  return dir;
-}
+using test::shared_dir;
 
 MeshOptions mesh_options(const std::string& surface, const std::string& output) {
   MeshOptions o;

@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <string>
@@ -28,6 +27,7 @@
 #include "pipeline/mesh_command.hpp"
 #include "pipeline/tree_removal_step.hpp"
 #include "pipeline/treeless_step.hpp"
+#include "mpi/mpi_scratch.hpp"
 #include "test_support.hpp"
 
 namespace partet {
@@ -43,12 +43,7 @@ class DistributedRemovals : public testing::TestWithParam<Case> {};
 TEST_P(DistributedRemovals, EveryRankMakesTetsAndTheMeshIsValid) {
   const Comm comm = Comm::world();
   const Log log(comm.rank(), false, false);
-  const std::string dir = "/tmp/partet_mpi_removals_" + std::to_string(comm.size());
-  if (comm.rank() == 0) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  comm.barrier();
+  const std::string dir = test::shared_dir(comm, "removals");
   MeshOptions o;
   o.input = test::data_path(GetParam().surface);
   o.output = dir + "/mesh.vtu";
@@ -155,12 +150,7 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, DistributedRemovals,
 TEST(DistributedTreeless, TheRanksCloseCavitiesAndTheMeshIsValid) {
   const Comm comm = Comm::world();
   const Log log(comm.rank(), false, false);
-  const std::string dir = "/tmp/partet_mpi_treeless_" + std::to_string(comm.size());
-  if (comm.rank() == 0) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  comm.barrier();
+  const std::string dir = test::shared_dir(comm, "treeless");
   MeshOptions o;
   o.input = test::data_path("good/spool.off");
   o.output = dir + "/mesh.vtu";

@@ -12,6 +12,7 @@
 #include "parallel/write_parts.hpp"
 #include "pipeline/mesh_command.hpp"
 #include "pipeline/report.hpp"
+#include "mpi/mpi_scratch.hpp"
 #include "test_support.hpp"
 
 namespace partet {
@@ -117,12 +118,7 @@ TetMesh cube_part(const Comm& comm) {
 
 TEST(MpiRuntime, DistributedWritesJoinToTheWholeMesh) {
   Comm comm = Comm::world();
-  std::string dir = "/tmp/partet_mpi_write_" + std::to_string(comm.size());
-  if (comm.rank() == 0) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  comm.barrier();
+  const std::string dir = test::shared_dir(comm, "write");
   TetMesh part = cube_part(comm);
   SurfaceMesh box = test::box_surface();
   for (const char* name : {"/cube.pvtu", "/cube.vtu", "/cube.mesh", "/cube.msh"}) {
