@@ -1,5 +1,7 @@
 # Runs one mesher as a whole process and measures it: wall time (Python's
-# monotonic clock around the process) and peak RSS (GNU time's %M: the
+# monotonic clock around a blocking wait for the process; Popen.wait with a
+# timeout polls with sleeps of up to 50 ms, which rounded every run up to
+# the next poll) and peak RSS (GNU time's %M: the
 # max RSS of the mesher itself, which it waits for). A run that exceeds the
 # timeout is killed with its whole process group and recorded as "timeout"
 # (with the peak RSS it had reached, from /proc); its address space is
@@ -11,6 +13,7 @@ import os
 import resource
 import signal
 import subprocess
+import threading
 import time
 
 REPEAT_BELOW_S = 10.0
@@ -37,14 +40,24 @@ def run_once(argv, cwd, timeout, log_path, memory_gb):
                                 stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
                                 start_new_session=True,
                                 preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS, (limit, limit)))
-        try:
-            code = proc.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            rss_mb = peak_rss_mb_of_child(proc.pid)
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-            return {"status": "timeout", "wall_s": timeout, "rss_mb": rss_mb, "exit_code": None}
+        # A timer kills the run's process group at the timeout (noting the
+        # peak RSS it had reached first); the wait itself blocks.
+        killed = {}
+
+        def kill():
+            killed["rss_mb"] = peak_rss_mb_of_child(proc.pid)
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)
+            except ProcessLookupError:  # it ended as the timer fired
+                pass
+
+        timer = threading.Timer(timeout, kill)
+        timer.start()
+        code = proc.wait()
         wall = time.monotonic() - start
+        timer.cancel()
+        if killed:
+            return {"status": "timeout", "wall_s": timeout, "rss_mb": killed["rss_mb"], "exit_code": None}
     rss_kib = None
     if os.path.exists(time_file):
         with open(time_file) as f:
