@@ -1,11 +1,12 @@
 // optimize_mesh (see optimize.hpp). A pass:
-//  1. topology: the tets below the target, worst first (ties by slot), each
+//  1. topology: the tets below the target, worst first (ties by slot) in
+//     each block of 4096 slots, block after block (tets_below), each
 //     offered every flip of its 6 edges and 4 faces; the candidate with the
 //     best new worst quality is applied if it beats its cavity's worst. New
 //     tets still below the target join the end of the work list, whose
 //     length is capped.
 //  2. insertion: a new interior vertex for each tet still below the
-//     insertion bar, worst first, where it pays (insertion.hpp), else one
+//     insertion bar, in the same order, where it pays (insertion.hpp), else one
 //     of its vertices collapsed where that pays (collapse.hpp); not in the
 //     last of two or more passes, which leaves the vertices of the earlier
 //     ones to the flips and smoothing (docs/decisions.md, "No vertex
@@ -70,7 +71,16 @@ class FailedFlips {
   std::vector<uint32_t> at_;
 };
 
-// Alive tets below `target`, worst first.
+// Tets are taken in blocks of 2^kOrderBlockBits consecutive slots, worst
+// first within each block. Slots follow space (templates leaf by leaf, the
+// front's tets face by face in Morton order), so a pass stays in one region
+// of the mesh at a time; worst first over the whole mesh sent every
+// operation to a random place, and on millions of tets each then waited on
+// memory (blobby r3, 2.8 M tets: the topology passes 8.0 -> 5.2 s, same
+// quality).
+constexpr int kOrderBlockBits = 12;
+
+// Alive tets below `target`, block by block, worst first in each.
 std::vector<uint32_t> tets_below(const TetTopology& topo, double target) {
   std::vector<std::pair<double, uint32_t>> bad;
   for (uint32_t t = 0; t < topo.slots(); ++t) {
@@ -78,7 +88,10 @@ std::vector<uint32_t> tets_below(const TetTopology& topo, double target) {
     const double q = topo.quality(t);
     if (q < target) bad.emplace_back(q, t);
   }
-  std::sort(bad.begin(), bad.end());
+  std::sort(bad.begin(), bad.end(), [](const std::pair<double, uint32_t>& x, const std::pair<double, uint32_t>& y) {
+    const uint32_t bx = x.second >> kOrderBlockBits, by = y.second >> kOrderBlockBits;
+    return bx != by ? bx < by : x < y;
+  });
   std::vector<uint32_t> tets(bad.size());
   for (size_t i = 0; i < bad.size(); ++i) tets[i] = bad[i].second;
   return tets;
@@ -148,7 +161,7 @@ size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats, Fai
   return applied;
 }
 
-// After the passes: each tet still below the target, worst first, is
+// After the passes: each tet still below the target, in that order, is
 // offered its best multi-face removal, applied when it lifts the cavity's
 // worst tet, adds no tet under 10 degrees and gains radius ratio at least
 // the mesh's mean per tet it adds (a removal takes tets away: it may lose
@@ -243,9 +256,10 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
   return moved;
 }
 
-// Step 2 of a pass: each tet below the insertion bar, worst first, gets a
-// vertex where that pays, else loses one (collapse_vertex) where that pays;
-// the number of vertices inserted or collapsed.
+// Step 2 of a pass: each tet below the insertion bar, block by block and
+// worst first in each, gets a vertex where that pays, else loses one
+// (collapse_vertex) where that pays; the number of vertices inserted or
+// collapsed.
 size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
                       OptimizeStats& stats, SmoothingScratch& scratch) {
   const size_t before = stats.vertices_inserted + stats.vertices_collapsed;

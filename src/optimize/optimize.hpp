@@ -1,14 +1,15 @@
 // Quality optimization of a finished, valid tet mesh, with its boundary
 // untouched: passes of topological improvement (2-3 flips, and edge removal
 // with its 3-2 and 4-4 special cases, see flips.hpp) on the tets below the
-// quality target, worst first, then (in every pass but the last of two or
-// more) interior vertex insertion where it pays (insertion.hpp), else
-// vertex collapse where that pays (collapse.hpp), then optimization-based
-// smoothing (smoothing.hpp) of the free vertices of the tets still below
-// the target or 30 degrees; after the passes, a
-// sweep of multi-face removals, rounds on the worst tet, a sweep of needle
-// splits (needle_split.hpp) and two sweeps of radius-ratio relaxation
-// (relax_vertex), which moves no worst tet down and adds no sliver.
+// quality target (block of slots by block, worst first in each: locality),
+// then (in every pass but the last of two or more) interior vertex insertion
+// where it pays (insertion.hpp), else vertex collapse where that pays
+// (collapse.hpp), then optimization-based smoothing (smoothing.hpp) of the
+// free vertices of the tets still below the target or 30 degrees; after the
+// passes, a sweep of multi-face removals, rounds on the worst tet, a sweep
+// of needle splits (needle_split.hpp) and two sweeps of radius-ratio
+// relaxation (relax_vertex), which moves no worst tet down and adds no
+// sliver.
 //
 // Frozen vertices never move: those of boundary faces (faces of exactly one
 // tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
