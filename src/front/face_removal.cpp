@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/hash_mix.hpp"
 #include "core/predicates.hpp"
 #include "front/face_queue.hpp"
 #include "front/removal_checks.hpp"
@@ -20,7 +20,6 @@ namespace partet {
 
 namespace {
 
-constexpr uint32_t kNeverFailed = std::numeric_limits<uint32_t>::max();
 // Targets a face tries in a capped pass: three quarters of the faces take
 // their first target, and a face whose first 8 fail rarely succeeds soon.
 constexpr size_t kCappedTargets = 8;
@@ -144,17 +143,15 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_, &cover);
   ++counts_.tets;
   for (uint32_t g : added_) queue_.push(entry(g));
-  memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
-  memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
   foreign_.resize(front_.num_face_slots(), 0);
-  memo_.failure_of.resize(front_.num_face_slots());
 }
 
 bool Remover::known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker& why) const {
-  const RemovalMemo::Failure& failure = memo_.failure_of[f];
+  const RemovalMemo::Record* failure = memo_.find(f);
+  if (!failure) return false;
   // Targets mostly keep their rank between tries: look at `hint` first.
-  for (size_t k = 0; k < failure.count; ++k) {
-    const RemovalMemo::Blocked& b = memo_.blocked_pool[failure.first + (hint + k) % failure.count];
+  for (size_t k = 0; k < failure->count; ++k) {
+    const RemovalMemo::Blocked& b = memo_.blocked_pool[failure->first + (hint + k) % failure->count];
     if (b.target != p) continue;
     if (!still_blocked(front_, f, p, b.why)) return false;
     why = b.why;
@@ -164,10 +161,12 @@ bool Remover::known_blocked(uint32_t f, uint32_t p, size_t hint, RemovalBlocker&
 }
 
 void Remover::remember_failure(uint32_t f) {
-  memo_.live_blocked -= memo_.failure_of[f].count;
+  memo_.live_blocked -= memo_.record(f).count;
   if (memo_.blocked_pool.size() > 1024 && memo_.blocked_pool.size() > 2 * memo_.live_blocked) drop_garbage_failures();
   PARTET_ASSERT(memo_.blocked_pool.size() + blocked_.size() < kNoIndex, "failure pool overflow");
-  memo_.failure_of[f] = {static_cast<uint32_t>(memo_.blocked_pool.size()), static_cast<uint32_t>(blocked_.size())};
+  RemovalMemo::Record& failure = memo_.record(f);
+  failure.first = static_cast<uint32_t>(memo_.blocked_pool.size());
+  failure.count = static_cast<uint32_t>(blocked_.size());
   memo_.blocked_pool.insert(memo_.blocked_pool.end(), blocked_.begin(), blocked_.end());
   memo_.live_blocked += blocked_.size();
 }
@@ -176,18 +175,25 @@ void Remover::drop_garbage_failures() {
   std::vector<RemovalMemo::Blocked> kept;
   kept.reserve(memo_.live_blocked);
   memo_.live_blocked = 0;
-  for (uint32_t f = 0; f < memo_.failure_of.size(); ++f) {
-    RemovalMemo::Failure& failure = memo_.failure_of[f];
-    if (!front_.alive(f) || failure.count == 0) {
-      failure = {};
+  // Closed faces lose their records (nothing reads a closed face's), the
+  // others keep their failure times and their runs, packed.
+  std::vector<uint32_t> recorded;
+  recorded.reserve(memo_.recorded.size());
+  for (uint32_t f : memo_.recorded) {
+    if (!front_.alive(f)) {
+      memo_.records.erase(f);
       continue;
     }
+    recorded.push_back(f);
+    RemovalMemo::Record& failure = *memo_.records.find(f);
+    if (failure.count == 0) continue;
     const uint32_t first = static_cast<uint32_t>(kept.size());
     kept.insert(kept.end(), memo_.blocked_pool.begin() + failure.first,
                 memo_.blocked_pool.begin() + failure.first + failure.count);
     failure.first = first;
     memo_.live_blocked += failure.count;
   }
+  memo_.recorded.swap(recorded);
   memo_.blocked_pool.swap(kept);
 }
 
@@ -304,15 +310,8 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   out_.xyz.insert(out_.xyz.end(), front_.xyz().begin() + 3 * have, front_.xyz().end());
   if (ids) out_.global_ids.insert(out_.global_ids.end(), front_.global_ids().begin() + have, front_.global_ids().end());
 
-  if (memo_.min_quality != options_.min_quality) {
-    memo_.min_quality = options_.min_quality;
-    memo_.failed_capped_at.clear();
-    memo_.failed_full_at.clear();
-  }
-  memo_.failed_capped_at.resize(front_.num_face_slots(), kNeverFailed);
-  memo_.failed_full_at.resize(front_.num_face_slots(), kNeverFailed);
+  memo_.use_min_quality(options_.min_quality);
   foreign_.assign(front_.num_face_slots(), 0);
-  memo_.failure_of.resize(front_.num_face_slots());
   batch_.clear();
   if (seeds) {
     for (uint32_t f : *seeds)
@@ -336,16 +335,17 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
         foreign_[f] = 1;
         continue;
       }
-      std::vector<uint32_t>& failed_at = full ? memo_.failed_full_at : memo_.failed_capped_at;
-      if (failed_at[f] != kNeverFailed && !neighbourhood_changed_since(failed_at[f])) {
+      const uint32_t failed_at = memo_.failed_at(f, full);
+      if (failed_at != kNeverFailed && !neighbourhood_changed_since(failed_at)) {
         waiting.push_back(f);
         continue;
       }
       if (!try_face(f, full)) {
         PARTET_ASSERT(front_.changes() < kNeverFailed, "more front changes than the memo can stamp");
         const uint32_t now = static_cast<uint32_t>(front_.changes());
-        memo_.failed_capped_at[f] = now;
-        if (full) memo_.failed_full_at[f] = now;
+        RemovalMemo::Record& record = memo_.record(f);
+        record.failed_capped_at = now;
+        if (full) record.failed_full_at = now;
         waiting.push_back(f);
       }
     }
@@ -404,51 +404,65 @@ void removal_neighbourhood_leaves(const Front& front, const RootCube& root, uint
 
 std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root, const RemovalOptions& options,
                                         const RemovalMemo& memo, bool full) {
-  const std::vector<uint32_t>& failed_at = full ? memo.failed_full_at : memo.failed_capped_at;
   std::vector<uint32_t> faces;
   std::vector<size_t> leaves;
-  for (uint32_t f = 0; f < front.num_face_slots() && f < failed_at.size(); ++f) {
-    if (!front.alive(f) || failed_at[f] == kNeverFailed) continue;
+  for (uint32_t f : memo.recorded) {
+    const uint32_t failed_at = memo.failed_at(f, full);
+    if (!front.alive(f) || failed_at == kNeverFailed) continue;
     removal_neighbourhood_leaves(front, root, f, options, leaves);
-    if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at[f]; }))
+    if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at; }))
       faces.push_back(f);
   }
+  std::sort(faces.begin(), faces.end());
   return faces;
 }
 
 void record_failures(const Front& front, const std::vector<uint32_t>& faces, bool full, double min_quality,
                      RemovalMemo& memo) {
-  if (memo.min_quality != min_quality) {
-    memo.min_quality = min_quality;
-    memo.failed_capped_at.clear();
-    memo.failed_full_at.clear();
-  }
-  memo.failed_capped_at.resize(front.num_face_slots(), kNeverFailed);
-  memo.failed_full_at.resize(front.num_face_slots(), kNeverFailed);
+  memo.use_min_quality(min_quality);
   PARTET_ASSERT(front.changes() < kNeverFailed, "more front changes than the memo can stamp");
   const uint32_t now = static_cast<uint32_t>(front.changes());
   for (uint32_t f : faces) {
-    memo.failed_capped_at[f] = now;
-    if (full) memo.failed_full_at[f] = now;
+    RemovalMemo::Record& record = memo.record(f);
+    record.failed_capped_at = now;
+    if (full) record.failed_full_at = now;
+  }
+}
+
+uint64_t RemovalMemo::SlotTraits::hash(uint32_t f) { return hash_mix(f); }
+
+RemovalMemo::Record& RemovalMemo::record(uint32_t f) {
+  const size_t before = records.size();
+  Record& r = records.get_or_insert(f, Record{});
+  if (records.size() != before) recorded.push_back(f);
+  return r;
+}
+
+uint32_t RemovalMemo::failed_at(uint32_t f, bool full) const {
+  const Record* r = records.find(f);
+  if (!r) return kNeverFailed;
+  return full ? r->failed_full_at : r->failed_capped_at;
+}
+
+void RemovalMemo::use_min_quality(double q) {
+  if (min_quality == q) return;
+  min_quality = q;
+  for (uint32_t f : recorded) {
+    Record& r = *records.find(f);
+    r.failed_capped_at = r.failed_full_at = kNeverFailed;
   }
 }
 
 void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
-  for (std::vector<uint32_t>* at : {&failed_capped_at, &failed_full_at}) {
-    std::vector<uint32_t> kept;
-    for (size_t f = 0; f < new_face.size() && f < at->size(); ++f)
-      if (new_face[f] != kNoIndex) {
-        PARTET_ASSERT(new_face[f] == kept.size(), "face renumbering out of order");
-        kept.push_back((*at)[f]);
-      }
-    at->swap(kept);
-  }
-  std::vector<Failure> failures;
+  std::vector<uint32_t> old_faces = recorded;
+  std::sort(old_faces.begin(), old_faces.end());
+  FlatHashMap<uint32_t, Record, SlotTraits> kept_records;
+  std::vector<uint32_t> kept_faces;
   std::vector<Blocked> pool;
-  for (size_t f = 0; f < new_face.size() && f < failure_of.size(); ++f) {
-    if (new_face[f] == kNoIndex) continue;
-    Failure kept{static_cast<uint32_t>(pool.size()), 0};
-    const Failure& old = failure_of[f];
+  for (uint32_t f : old_faces) {
+    if (f >= new_face.size() || new_face[f] == kNoIndex) continue;
+    const Record& old = *records.find(f);
+    Record kept{old.failed_capped_at, old.failed_full_at, static_cast<uint32_t>(pool.size()), 0};
     for (uint32_t k = 0; k < old.count; ++k) {
       Blocked b = blocked_pool[old.first + k];
       if (blocked_by_face(b.why)) {
@@ -458,9 +472,12 @@ void RemovalMemo::renumber(const std::vector<uint32_t>& new_face) {
       pool.push_back(b);
       ++kept.count;
     }
-    failures.push_back(kept.count > 0 ? kept : Failure{});
+    if (kept.count == 0) kept.first = kNoIndex;
+    kept_records.get_or_insert(new_face[f], kept);
+    kept_faces.push_back(new_face[f]);
   }
-  failure_of.swap(failures);
+  records = std::move(kept_records);
+  recorded.swap(kept_faces);
   blocked_pool.swap(pool);
   live_blocked = blocked_pool.size();
 }

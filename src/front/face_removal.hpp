@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/flat_hash_map.hpp"
 #include "core/tet_mesh.hpp"
 #include "front/front.hpp"
 #include "front/removal_checks.hpp"
@@ -74,39 +75,59 @@ struct RemovalOptions {
   int rescues = 3;
 };
 
+// A failure time no face has: never failed.
+inline constexpr uint32_t kNeverFailed = UINT32_MAX;
+
 // What earlier calls learnt, so that a call after a local change costs
-// what changed, not the whole front:
-//  - per face slot, the front's change counter when the face last failed a
-//    capped pass (a full failure counts as one too) and a full pass, under
+// what changed, not the whole front. A record per face slot that ever
+// failed (about one in eight; a face that never failed has none, so the
+// memo grows with the failures, not with every face slot made):
+//  - the front's change counter when the face last failed a capped pass
+//    (a full failure counts as one too) and a full pass, under
 //    `min_quality`. A face whose neighbourhood leaves have not changed
 //    since is not retried (its answer depends on nothing else). Valid for
 //    one front and one set of RemovalOptions; a call with another
 //    min_quality starts these afresh;
-//  - per face slot, why its latest failed try failed, target by target
-//    (a run [first, first + count) of `blocked_pool`): a target whose
-//    blocker still blocks (still_blocked) is not checked again. Exact on
-//    every later front, whatever min_quality: face slots are never reused
-//    and a vertex that was ever on the front keeps its index and point, so
-//    a blocker still on the front still blocks. The tree-less rounds
-//    retry every face near a change; most of their targets are such
-//    repeats. Runs of closed or retried faces are garbage, dropped when
-//    the pool holds twice the live runs.
+//  - why its latest failed try failed, target by target (a run [first,
+//    first + count) of `blocked_pool`): a target whose blocker still
+//    blocks (still_blocked) is not checked again. Exact on every later
+//    front, whatever min_quality: face slots are never reused and a vertex
+//    that was ever on the front keeps its index and point, so a blocker
+//    still on the front still blocks. The tree-less rounds retry every
+//    face near a change; most of their targets are such repeats. Runs of
+//    closed or retried faces are garbage, dropped (with the records of
+//    closed faces) when the pool holds twice the live runs.
 struct RemovalMemo {
   double min_quality = 0;
-  std::vector<uint32_t> failed_capped_at, failed_full_at;  // 32 bits: 4e9 tets are far beyond one rank
 
   struct Blocked {
     uint32_t target;
     RemovalBlocker why;
   };
-  struct Failure {
-    uint32_t first = kNoIndex;
+  struct Record {
+    uint32_t failed_capped_at = kNeverFailed;  // 32 bits: 4e9 tets are far beyond one rank
+    uint32_t failed_full_at = kNeverFailed;
+    uint32_t first = kNoIndex;  // the latest failure's run in blocked_pool
     uint32_t count = 0;
   };
-  std::vector<Failure> failure_of;
+  struct SlotTraits {
+    static uint32_t empty() { return kNoIndex; }
+    static uint64_t hash(uint32_t f);
+  };
+  FlatHashMap<uint32_t, Record, SlotTraits> records;
+  std::vector<uint32_t> recorded;  // the slots with a record, in the order first recorded
   std::vector<Blocked> blocked_pool;
   size_t live_blocked = 0;
 
+  // Face f's record, or nullptr.
+  const Record* find(uint32_t f) const { return records.find(f); }
+  // Face f's record, made empty when it has none.
+  Record& record(uint32_t f);
+  // When face f last failed a full (`full`) or capped pass, or kNeverFailed.
+  uint32_t failed_at(uint32_t f, bool full) const;
+  // Sets `min_quality`; another one than the memo's forgets every failure
+  // time (the runs stay: they hold whatever min_quality).
+  void use_min_quality(double q);
   // Follows Front::compact: `new_face` maps old face slots to new ones. A
   // record whose blocking face was closed is dropped (its target is
   // checked again).

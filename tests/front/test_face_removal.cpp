@@ -316,6 +316,26 @@ TEST(FrontRemoval, MemoSkipsUnchangedNeighbourhoods) {
   EXPECT_GT(stuck_inputs, 0u) << "no input left faces to retry";
 }
 
+// The memo keeps a record only for faces that failed: a small share of the
+// face slots the removals made (it was an array over all of them), and
+// every face left alive, having failed, has one.
+TEST(FrontRemoval, MemoHoldsFailingFacesOnly) {
+  for (const char* name : {"sphere966.off", "eight.off", "spool.off"}) {
+    Meshing m;
+    prepare(m, read_surface_file(data_path(std::string("good/") + name)), 0.5);
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    RemovalMemo memo;
+    const RemovalCounts counts = remove_until_stuck(m, front, out, memo);
+    EXPECT_EQ(memo.recorded.size(), memo.records.size()) << name;
+    EXPECT_LT(memo.records.size() * 4, front.num_face_slots()) << name;
+    size_t left_with_record = 0;
+    for (uint32_t f = 0; f < front.num_face_slots(); ++f)
+      left_with_record += front.alive(f) && memo.failed_at(f, false) != kNeverFailed;
+    EXPECT_EQ(left_with_record, counts.faces_left) << name;
+  }
+}
+
 // The failures a memo holds that still stand, recorded in another copy of
 // the front's memo (as the ranks hand theirs to rank 0), spare that copy
 // every check the first copy already failed; a change near a face takes it
@@ -397,7 +417,8 @@ TEST(FrontRemoval, CompactionChangesNoTet) {
     const std::vector<uint32_t> new_face = b.compact();
     memo_b.renumber(new_face);
     EXPECT_EQ(b.num_face_slots(), alive) << name;
-    EXPECT_EQ(memo_b.failed_capped_at.size(), alive) << name;
+    EXPECT_LE(memo_b.recorded.size(), alive) << name;
+    EXPECT_EQ(memo_b.recorded.size(), memo_b.records.size()) << name;
     for (uint32_t f = 0; f < a.num_face_slots(); ++f) {
       ASSERT_EQ(a.alive(f), new_face[f] != kNoIndex) << name;
       if (!a.alive(f)) continue;
@@ -405,7 +426,8 @@ TEST(FrontRemoval, CompactionChangesNoTet) {
       EXPECT_TRUE(std::equal(t, t + 3, a.face(f))) << name;
       EXPECT_EQ(b.find_face(t[2], t[0], t[1]), new_face[f]) << name;
       EXPECT_EQ(b.edge_uses(t[0], t[1]), a.edge_uses(t[0], t[1])) << name;
-      EXPECT_EQ(memo_b.failed_capped_at[new_face[f]], memo_a.failed_capped_at[f]) << name;
+      EXPECT_EQ(memo_b.failed_at(new_face[f], false), memo_a.failed_at(f, false)) << name;
+      EXPECT_EQ(memo_b.failed_at(new_face[f], true), memo_a.failed_at(f, true)) << name;
     }
     const RemovalCounts na = remove_faces_tree_supported(a, plain.tree, plain.root, out_a, {}, nullptr, &memo_a);
     const RemovalCounts nb =
@@ -537,18 +559,18 @@ TEST(FrontRemoval, BlockedRecordsStaySoundAfterCompactionAndDeletions) {
     RemovalMemo memo;
     remove_faces_tree_supported(front, m.tree, m.root, out, {}, nullptr, &memo);
     memo.renumber(front.compact());
-    ASSERT_EQ(memo.failure_of.size(), front.num_face_slots()) << name;
+    ASSERT_FALSE(memo.recorded.empty()) << name;
     // Reopen every fifth tet the removals made, newest first.
     std::vector<uint32_t> added, shrunk;
     for (size_t t = out.num_tets(); t-- > core_tets;)
       if (t % 5 == 0) front.remove_tet(&out.tets[4 * t], added, shrunk);
     NearFront near;
     std::vector<size_t> leaves;
-    for (uint32_t f = 0; f < memo.failure_of.size(); ++f) {
-      if (!front.alive(f)) continue;
-      const RemovalMemo::Failure& failure = memo.failure_of[f];
-      for (uint32_t k = 0; k < failure.count; ++k) {
-        const RemovalMemo::Blocked& b = memo.blocked_pool[failure.first + k];
+    for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+      const RemovalMemo::Record* failure = memo.find(f);
+      if (!front.alive(f) || !failure) continue;
+      for (uint32_t k = 0; k < failure->count; ++k) {
+        const RemovalMemo::Blocked& b = memo.blocked_pool[failure->first + k];
         if (front.vertex_uses(b.target) == 0 || !still_blocked(front, f, b.target, b.why)) {
           ++dropped;
           continue;
