@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <queue>
 #include <utility>
 
 #include "check/quality.hpp"
@@ -285,6 +286,10 @@ struct JointScratch {
 // for a degree (star r1 31.9 -> 35.2 degrees, 0.735 -> 0.688).
 constexpr double kFlatAngle = 1;
 
+// The worst-tet rounds seek the worst tet among about this many of the
+// worst and the tets changed since (worst_tet_rounds), not over every slot.
+constexpr size_t kLowTets = 1024;
+
 // Tets within this quality of the worst one lend their free corners to a
 // joint move (kJointVertices at most).
 constexpr double kJointBand = 0.05;
@@ -370,11 +375,50 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
   const auto worse = [&](uint32_t t, uint32_t than) {
     return (than == TetTopology::kNone || topo.quality(t) < topo.quality(than)) && (aside.empty() || !set_aside(t));
   };
+  // The first rounds' worst tet is the one a scan of every slot finds (the
+  // lowest quality, then the lowest slot), sought among `low`: the
+  // kLowTets worst at the last scan, whose qualities lie under `cut` but
+  // for ties at it, and the tets changed since (every other tet is at `cut`
+  // or above). When none of them is under `cut`, a scan refills `low`.
+  std::vector<uint32_t> low;
+  double cut = -std::numeric_limits<double>::infinity();
+  const auto scan_low = [&] {
+    std::priority_queue<std::pair<double, uint32_t>> worst_seen;  // the kLowTets smallest (quality, slot)
+    for (uint32_t t = 0; t < topo.slots(); ++t) {
+      if (!topo.alive(t) || (!aside.empty() && set_aside(t))) continue;
+      const std::pair<double, uint32_t> key{topo.quality(t), t};
+      if (worst_seen.size() < kLowTets) {
+        worst_seen.push(key);
+      } else if (key < worst_seen.top()) {
+        worst_seen.pop();
+        worst_seen.push(key);
+      }
+    }
+    cut = worst_seen.size() < kLowTets ? std::numeric_limits<double>::infinity() : worst_seen.top().first;
+    low.clear();
+    for (; !worst_seen.empty(); worst_seen.pop()) low.push_back(worst_seen.top().second);
+    std::sort(low.begin(), low.end());
+    changed_tets.clear();
+  };
+  const auto worst_of_low = [&] {
+    low.insert(low.end(), changed_tets.begin(), changed_tets.end());
+    changed_tets.clear();
+    std::sort(low.begin(), low.end());
+    low.erase(std::unique(low.begin(), low.end()), low.end());
+    uint32_t worst = TetTopology::kNone;
+    for (uint32_t t : low)
+      if (topo.alive(t) && worse(t, worst)) worst = t;
+    return worst;
+  };
+  if (options.worst_tet_rounds > 0) topo.log_changes(&changed_tets);
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     if (round < options.worst_tet_rounds) {
-      for (uint32_t t = 0; t < topo.slots(); ++t)
-        if (topo.alive(t) && worse(t, worst)) worst = t;
+      worst = worst_of_low();
+      if (worst == TetTopology::kNone || !(topo.quality(worst) < cut)) {
+        scan_low();
+        worst = worst_of_low();
+      }
     } else {
       if (round == options.worst_tet_rounds) {
         for (uint32_t t = 0; t < topo.slots(); ++t)
