@@ -1,8 +1,8 @@
 # Runs one mesher as a whole process and measures it: wall time (Python's
 # monotonic clock around a blocking wait for the process; Popen.wait with a
 # timeout polls with sleeps of up to 50 ms, which rounded every run up to
-# the next poll) and peak RSS (GNU time's %M: the
-# max RSS of the mesher itself, which it waits for). A run that exceeds the
+# the next poll) and peak RSS (GNU time's %M: the max RSS of the mesher
+# itself, which it waits for). A run that exceeds the
 # timeout is killed with its whole process group and recorded as "timeout"
 # (with the peak RSS it had reached, from /proc); its address space is
 # capped (RLIMIT_AS), so a mesher that runs away in memory fails instead of

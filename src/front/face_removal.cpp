@@ -164,7 +164,7 @@ void Remover::remember_failure(uint32_t f) {
   memo_.live_blocked -= memo_.record(f).count;
   if (memo_.blocked_pool.size() > 1024 && memo_.blocked_pool.size() > 2 * memo_.live_blocked) drop_garbage_failures();
   PARTET_ASSERT(memo_.blocked_pool.size() + blocked_.size() < kNoIndex, "failure pool overflow");
-  RemovalMemo::Record& failure = memo_.record(f);
+  RemovalMemo::Record& failure = memo_.record(f);  // looked up again: packing moves records
   failure.first = static_cast<uint32_t>(memo_.blocked_pool.size());
   failure.count = static_cast<uint32_t>(blocked_.size());
   memo_.blocked_pool.insert(memo_.blocked_pool.end(), blocked_.begin(), blocked_.end());

@@ -6,8 +6,8 @@
 //     tets still below the target join the end of the work list, whose
 //     length is capped.
 //  2. insertion: a new interior vertex for each tet still below the
-//     insertion bar, in the same order, where it pays (insertion.hpp), else one
-//     of its vertices collapsed where that pays (collapse.hpp); not in the
+//     insertion bar, in the same order, where it pays (insertion.hpp), else
+//     one of its vertices collapsed where that pays (collapse.hpp); not in the
 //     last of two or more passes, which leaves the vertices of the earlier
 //     ones to the flips and smoothing (docs/decisions.md, "No vertex
 //     insertion in the last optimizer pass": 11 % of the optimizer's time
@@ -397,41 +397,37 @@ void worst_tet_rounds(TetTopology& topo, double target, const OptimizeOptions& o
     cut = worst_seen.size() < kLowTets ? std::numeric_limits<double>::infinity() : worst_seen.top().first;
     low.clear();
     for (; !worst_seen.empty(); worst_seen.pop()) low.push_back(worst_seen.top().second);
-    std::sort(low.begin(), low.end());
     changed_tets.clear();
   };
-  const auto worst_of_low = [&] {
-    low.insert(low.end(), changed_tets.begin(), changed_tets.end());
+  // Adds the tets changed since the last call to `tets` (kept ascending,
+  // each once), drops the dead ones and those not under `below`, and
+  // returns the worst of the rest, ties to the lowest slot (kNone if none).
+  const auto merge_changed_worst = [&](std::vector<uint32_t>& tets, double below) {
+    tets.insert(tets.end(), changed_tets.begin(), changed_tets.end());
     changed_tets.clear();
-    std::sort(low.begin(), low.end());
-    low.erase(std::unique(low.begin(), low.end()), low.end());
+    std::sort(tets.begin(), tets.end());
+    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+    std::erase_if(tets, [&](uint32_t t) { return !topo.alive(t) || !(topo.quality(t) < below); });
     uint32_t worst = TetTopology::kNone;
-    for (uint32_t t : low)
-      if (topo.alive(t) && worse(t, worst)) worst = t;
+    for (uint32_t t : tets)
+      if (worse(t, worst)) worst = t;
     return worst;
   };
-  if (options.worst_tet_rounds > 0) topo.log_changes(&changed_tets);
+  const double everything = std::numeric_limits<double>::infinity();
+  topo.log_changes(&changed_tets);
   for (int round = 0; round < rounds; ++round) {
     uint32_t worst = TetTopology::kNone;
     if (round < options.worst_tet_rounds) {
-      worst = worst_of_low();
+      worst = merge_changed_worst(low, everything);
       if (worst == TetTopology::kNone || !(topo.quality(worst) < cut)) {
         scan_low();
-        worst = worst_of_low();
+        worst = merge_changed_worst(low, everything);
       }
     } else {
-      if (round == options.worst_tet_rounds) {
+      if (round == options.worst_tet_rounds)
         for (uint32_t t = 0; t < topo.slots(); ++t)
           if (topo.alive(t) && topo.quality(t) < flat) flat_tets.push_back(t);
-        topo.log_changes(&changed_tets);
-      }
-      flat_tets.insert(flat_tets.end(), changed_tets.begin(), changed_tets.end());
-      changed_tets.clear();
-      std::sort(flat_tets.begin(), flat_tets.end());
-      flat_tets.erase(std::unique(flat_tets.begin(), flat_tets.end()), flat_tets.end());
-      std::erase_if(flat_tets, [&](uint32_t t) { return !topo.alive(t) || !(topo.quality(t) < flat); });
-      for (uint32_t t : flat_tets)
-        if (worse(t, worst)) worst = t;
+      worst = merge_changed_worst(flat_tets, flat);
     }
     if (worst == TetTopology::kNone || !(topo.quality(worst) < target)) break;
     bool changed = false;

@@ -5,9 +5,10 @@
 //    rank 0, with every leaf its own: on 2 ranks that measured faster
 //    than the rounds below (docs/decisions.md, "Tree-less removals on rank
 //    0 alone by default");
-//  - P ranks with `on_ranks` (--treeless-on-ranks), in rounds: rank 0 sends every rank the front (its vertices
-//    beyond the initial front's, its faces in slot order), the mesh's tets
-//    and the memo's failures that still stand (standing_failures), and
+//  - P ranks with `on_ranks` (--treeless-on-ranks), in rounds: rank 0
+//    sends every rank the front (its vertices beyond the initial front's,
+//    its faces in slot order), the mesh's tets and the memo's failures
+//    that still stand (standing_failures), and
 //    every rank builds the same front from them. The leaves are owned
 //    anew: the front's faces are cut into P equal shares by inertial
 //    bisection of their centroids (interface_owners.hpp) and every leaf
