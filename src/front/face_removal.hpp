@@ -73,6 +73,9 @@ struct RemovalOptions {
   // `rescues` rescue strategies in turn (treeless_removal.hpp; at most 3,
   // 0: the default strategy only).
   int rescues = 3;
+  // Tree-less removals only: try TreelessStrategy::kShortGrowth before the
+  // default strategy (treeless_removal.hpp, "Short growth first").
+  bool short_growth_first = true;
 };
 
 // A failure time no face has: never failed.

@@ -1,6 +1,7 @@
-// remove_faces_treeless: the default strategy's rounds, then, while faces
-// are left, the rescue strategies' rounds each from the starting state
-// (see treeless_removal.hpp, "Rescue"); the rounds themselves are in
+// remove_faces_treeless: the short-growth and default strategies' rounds,
+// then, while faces are left, the rescue strategies' rounds, each from the
+// starting state (see treeless_removal.hpp, "Short growth first" and
+// "Rescue"); the rounds themselves are in
 // treeless_rounds.cpp.
 #include "front/treeless_removal.hpp"
 
@@ -37,6 +38,7 @@ struct TreelessState {
 
 const char* strategy_name(TreelessStrategy strategy) {
   switch (strategy) {
+    case TreelessStrategy::kShortGrowth: return "short growth";
     case TreelessStrategy::kDefault: return "default";
     case TreelessStrategy::kUndoOvergrowth: return "undo overgrowth";
     case TreelessStrategy::kConeFirst: return "cone first";
@@ -50,18 +52,20 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
-  const size_t attempts =
-      1 + std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kTreelessStrategies) - 1);
-  if (attempts == 1) {
-    TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, TreelessStrategy::kDefault);
+  std::vector<TreelessStrategy> strategies;
+  if (options.short_growth_first) strategies.push_back(TreelessStrategy::kShortGrowth);
+  strategies.push_back(TreelessStrategy::kDefault);
+  const size_t rescues = std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kRescueStrategies));
+  strategies.insert(strategies.end(), kRescueStrategies, kRescueStrategies + rescues);
+  if (strategies.size() == 1) {
+    TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategies[0]);
     n.faces_left_by_attempt = {n.faces_left};
     return n;
   }
   const TreelessState start{front, tree.cls, out, m, {}};
   std::optional<TreelessState> best;
   std::vector<size_t> faces_left;
-  for (size_t i = 0; i < attempts; ++i) {
-    const TreelessStrategy strategy = kTreelessStrategies[i];
+  for (const TreelessStrategy strategy : strategies) {
     if (!faces_left.empty()) start.restore(front, tree, out, m);
     TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategy);
     faces_left.push_back(n.faces_left);

@@ -63,6 +63,19 @@
 // surface vertices are kSurfaceVertexId | s with s < 2^32 (bit 62 clear),
 // so the three id spaces are disjoint.
 //
+// Short growth first (options.short_growth_first, on by default): before
+// the default, the rounds run with kShortGrowth: at most 4 growth steps per
+// fill instead of kMaxGrowth = 8, so that a cavity that is not star-shaped
+// is split by its partial cone sooner instead of deleting (and the tree
+// pass rebuilding) more of the mesh around it. Where it closes, it closes
+// in fewer rounds (the one-round refinements of the CAD parts: t13_data
+// 50 -> 12 rounds, spool 13 -> 4); where it churns (pipe r1: the front
+// hovers between 250 and 1,000 faces), it stalls after 6 rounds without a
+// smaller front (where it closes, a smaller front comes every round or two
+// on the corpus refinements, at most 5 rounds apart on pinion r2), and the
+// front, `out`, the tree's leaf classes and `memo` are restored for the
+// default, as for the rescues below.
+//
 // Rescue: the rounds are chaotic (a change to how a cavity is treated
 // closes one input and stalls another), so other strategies run only where
 // the default fails. When the default ends with faces left (stalled, a
@@ -111,15 +124,22 @@ namespace partet {
 constexpr uint64_t kSteinerVertexId = kSurfaceVertexId | (uint64_t{1} << 62);
 
 // How the rounds treat the components one star point does not close
-// (steps 1-5 above), in the order a call tries them (see Rescue).
+// (steps 1-5 above); a call tries them in this order (see Short growth
+// first and Rescue).
 enum class TreelessStrategy : uint8_t {
+  kShortGrowth,     // as kDefault, with at most 4 growth steps and a stall after 6 rounds
   kDefault,         // a growth step past kMaxGrownFaces is kept
   kUndoOvergrowth,  // a growth step past kMaxGrownFaces is undone
   kConeFirst,       // as kUndoOvergrowth, and a partial cone before the first growth
   kSmallCavities,   // as kDefault, with components of at most 64 faces filled as one cavity
 };
-constexpr TreelessStrategy kTreelessStrategies[] = {TreelessStrategy::kDefault, TreelessStrategy::kUndoOvergrowth,
-                                                    TreelessStrategy::kConeFirst, TreelessStrategy::kSmallCavities};
+// TreelessStrategy::kShortGrowth: growth steps per fill, and rounds in a
+// row without a smaller front before the attempt gives up (at most
+// RemovalOptions::stall_rounds).
+constexpr int kShortGrowthSteps = 4;
+constexpr size_t kShortGrowthStall = 6;
+constexpr TreelessStrategy kRescueStrategies[] = {TreelessStrategy::kUndoOvergrowth, TreelessStrategy::kConeFirst,
+                                                  TreelessStrategy::kSmallCavities};
 const char* strategy_name(TreelessStrategy strategy);
 
 struct TreelessCounts {

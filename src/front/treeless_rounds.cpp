@@ -383,7 +383,8 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
     const double* q = kernel.found ? kernel.point : candidates[2];
     reopened_.clear();
     restorable_ = true;
-    if (growth == kMaxGrowth || !(reopen_blockers(faces, q, false) || reopen_blockers(faces, q, true))) break;
+    const int max_growth = strategy_ == TreelessStrategy::kShortGrowth ? kShortGrowthSteps : kMaxGrowth;
+    if (growth == max_growth || !(reopen_blockers(faces, q, false) || reopen_blockers(faces, q, true))) break;
     // The grown component: the one holding an alive face of the old one or
     // a face the deletions added.
     uint32_t seed = kNoIndex;
@@ -620,6 +621,9 @@ TreelessCounts TreelessRemover::run() {
   deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
   const size_t max_cavity = strategy_ == TreelessStrategy::kSmallCavities ? kMaxSmallCavityFaces : kMaxCavityFaces;
+  const size_t stall_rounds = strategy_ == TreelessStrategy::kShortGrowth
+                                  ? std::min(options_.stall_rounds, kShortGrowthStall)
+                                  : options_.stall_rounds;
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;
   bool changed = front_.num_alive_faces() > 0;
@@ -665,7 +669,7 @@ TreelessCounts TreelessRemover::run() {
     if (front_.num_alive_faces() < smallest) {
       smallest = front_.num_alive_faces();
       since_smallest = 0;
-    } else if (++since_smallest >= options_.stall_rounds) {
+    } else if (++since_smallest >= stall_rounds) {
       counts_.stalled = true;
       break;
     }

@@ -2,12 +2,14 @@
 // pipeline: every surface of data/ (good and fixable) and generated
 // multi-shell bodies close completely, and the result with the surface is
 // a valid mesh; new vertices carry ids in their own space; two runs give
-// the same mesh; when the default strategy leaves faces, a rescue strategy
-// closes them or the best attempt is kept. Also the pieces: the deepest
+// the same mesh; the short-growth attempt closes a CAD part in fewer rounds
+// than the default; when those leave faces, a rescue strategy closes them
+// or the best attempt is kept. Also the pieces: the deepest
 // kernel point of a front, the reopening of a tet (Front::remove_tet) and
 // the tet behind a face.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iterator>
 #include <string>
@@ -128,9 +130,9 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
 }
 
 // pipe refined once: its front does not shrink in the first round (it
-// closes after about 50). With stall_rounds 1 and no rescue the call stops
-// there, stalled, and leaves a valid partial mesh; sphere966 closes
-// unstalled.
+// closes after about 20). With stall_rounds 1 and no rescue the
+// short-growth and default attempts both stop there, stalled, and the call
+// leaves a valid partial mesh; sphere966 closes unstalled.
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
@@ -145,13 +147,13 @@ TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   EXPECT_EQ(closed.faces_left, 0u);
 }
 
-// joint refined once with stall_rounds 1: the default strategy stalls
-// (530 faces left) and so do kUndoOvergrowth and kConeFirst; the call
+// joint refined once with stall_rounds 1: the short-growth and default
+// strategies stall, and so do kUndoOvergrowth and kConeFirst; the call
 // restarts from its starting state each time and kSmallCavities closes it,
 // into a mesh partet check's validator passes (mesh_surface). With one
-// rescue allowed both attempts fail: the call keeps the one that left the
-// fewer faces, at most what the default alone leaves, as a valid partial
-// mesh.
+// rescue allowed the three attempts fail: the call keeps the one that left
+// the fewest faces, at most what the first two alone leave, as a valid
+// partial mesh. Without short growth first, no rescue: one attempt.
 TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
   const SurfaceMesh joint = refine_midpoints(read_surface_file(data_path("good/joint.off")));
   RemovalOptions impatient;
@@ -159,18 +161,40 @@ TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
   const Meshed rescued = mesh_surface(joint, "good/joint.off r1, stall 1", impatient);
   EXPECT_EQ(rescued.faces_left, 0u);
   EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kSmallCavities);
-  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 4u);
-  for (size_t i = 0; i < 3; ++i) EXPECT_GT(rescued.counts.faces_left_by_attempt[i], 0u);
+  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 5u);
+  for (size_t i = 0; i < 4; ++i) EXPECT_GT(rescued.counts.faces_left_by_attempt[i], 0u);
 
   impatient.rescues = 1;
   const Meshed best = mesh_surface(joint, "good/joint.off r1, stall 1, one rescue", impatient);
   impatient.rescues = 0;
-  const Meshed alone = mesh_surface(joint, "good/joint.off r1, stall 1, no rescue", impatient);
-  ASSERT_EQ(best.counts.faces_left_by_attempt.size(), 2u);
+  const Meshed two = mesh_surface(joint, "good/joint.off r1, stall 1, no rescue", impatient);
+  impatient.short_growth_first = false;
+  const Meshed alone = mesh_surface(joint, "good/joint.off r1, stall 1, default only", impatient);
+  const std::vector<size_t>& left = best.counts.faces_left_by_attempt;
+  ASSERT_EQ(left.size(), 3u);
   EXPECT_GT(best.faces_left, 0u);
-  EXPECT_EQ(best.faces_left, std::min(best.counts.faces_left_by_attempt[0], best.counts.faces_left_by_attempt[1]));
-  EXPECT_LE(best.faces_left, alone.faces_left);
+  EXPECT_EQ(best.faces_left, *std::min_element(left.begin(), left.end()));
+  EXPECT_LE(best.faces_left, two.faces_left);
+  ASSERT_EQ(two.counts.faces_left_by_attempt.size(), 2u);
   EXPECT_EQ(alone.counts.faces_left_by_attempt, std::vector<size_t>{alone.faces_left});
+  EXPECT_EQ(alone.counts.strategy, TreelessStrategy::kDefault);
+}
+
+// spool refined once: the short-growth attempt closes it (its fills split
+// a cavity that is not star-shaped after 4 growth steps instead of 8), in
+// fewer rounds and with fewer tets deleted than the default alone.
+TEST(FrontTreeless, ShortGrowthClosesInFewerRounds) {
+  const SurfaceMesh spool = refine_midpoints(read_surface_file(data_path("good/spool.off")));
+  const Meshed short_first = mesh_surface(spool, "good/spool.off r1", {});
+  RemovalOptions without;
+  without.short_growth_first = false;
+  const Meshed default_only = mesh_surface(spool, "good/spool.off r1, default only", without);
+  EXPECT_EQ(short_first.faces_left, 0u);
+  EXPECT_EQ(default_only.faces_left, 0u);
+  EXPECT_EQ(short_first.counts.strategy, TreelessStrategy::kShortGrowth);
+  EXPECT_EQ(short_first.counts.faces_left_by_attempt, std::vector<size_t>{0});
+  EXPECT_LT(short_first.counts.rounds, default_only.counts.rounds);
+  EXPECT_LT(short_first.counts.tets_deleted, default_only.counts.tets_deleted);
 }
 
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
