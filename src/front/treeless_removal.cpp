@@ -34,19 +34,6 @@ struct TreelessState {
   }
 };
 
-// Adds the work counts of an earlier run on the same front to `to`.
-void add_work(TreelessCounts& to, const TreelessCounts& earlier) {
-  to.tree_tets += earlier.tree_tets;
-  to.new_vertex_tets += earlier.new_vertex_tets;
-  to.vertices_added += earlier.vertices_added;
-  to.tets_deleted += earlier.tets_deleted;
-  to.star_fills += earlier.star_fills;
-  to.partial_cones += earlier.partial_cones;
-  to.advances += earlier.advances;
-  to.rounds += earlier.rounds;
-  to.checks += earlier.checks;
-}
-
 }  // namespace
 
 const char* strategy_name(TreelessStrategy strategy) {
@@ -76,23 +63,12 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
     return n;
   }
   const TreelessState start{front, tree.cls, out, m, {}};
-  const size_t faces_at_start = front.num_alive_faces();
   std::optional<TreelessState> best;
   std::vector<size_t> faces_left;
   for (const TreelessStrategy strategy : strategies) {
     if (!faces_left.empty()) start.restore(front, tree, out, m);
     TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategy);
     faces_left.push_back(n.faces_left);
-    if (strategy == TreelessStrategy::kShortGrowth && n.faces_left > 0 &&
-        n.faces_left * kContinueShare <= faces_at_start) {
-      // Short growth stalled on a few cavities: the default goes on from
-      // there (see "Short growth first").
-      TreelessCounts d = run_treeless_rounds(front, tree, root, out, options, m, TreelessStrategy::kDefault);
-      faces_left.push_back(d.faces_left);
-      add_work(d, n);
-      d.after_short_growth = true;
-      n = d;
-    }
     n.faces_left_by_attempt = faces_left;
     if (n.faces_left == 0) return n;
     if (!best || n.faces_left < best->counts.faces_left) best = TreelessState{front, tree.cls, out, m, n};

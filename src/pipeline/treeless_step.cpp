@@ -29,8 +29,7 @@ std::string treeless_ending(const TreelessCounts& n) {
     text = "the tree-less removals tried " + std::to_string(left.size()) + " strategies, leaving ";
     for (size_t i = 0; i < left.size(); ++i)
       text += (i == 0 ? "" : i + 1 == left.size() ? " and " : ", ") + std::to_string(left[i]);
-    text += std::string(" faces; this front is what \"") + (n.after_short_growth ? "short growth, then " : "") +
-            strategy_name(n.strategy) + "\" left";
+    text += std::string(" faces; this front is what \"") + strategy_name(n.strategy) + "\" left";
   }
   if (n.stalled) {
     const size_t stall = n.strategy == TreelessStrategy::kShortGrowth
@@ -53,8 +52,7 @@ ojson counts_json(const TreelessCounts& n) {
   c["advances"] = n.advances;
   c["rounds"] = n.rounds;
   c["stalled"] = n.stalled;
-  c["strategy"] = n.after_short_growth ? std::string("short growth, then ") + strategy_name(n.strategy)
-                                        : std::string(strategy_name(n.strategy));
+  c["strategy"] = strategy_name(n.strategy);
   c["faces left by attempt"] = n.faces_left_by_attempt;
   c["faces left"] = n.faces_left;
   return c;

@@ -3,9 +3,8 @@
 // multi-shell bodies close completely, and the result with the surface is
 // a valid mesh; new vertices carry ids in their own space; two runs give
 // the same mesh; the short-growth attempt closes a CAD part in fewer rounds
-// than the default, which goes on where it stalls on a few cavities; when
-// those leave faces, a rescue strategy closes them or the best attempt is
-// kept. Also the pieces: the deepest
+// than the default; when those leave faces, a rescue strategy closes them
+// or the best attempt is kept. Also the pieces: the deepest
 // kernel point of a front, the reopening of a tet (Front::remove_tet) and
 // the tet behind a face.
 #include <gtest/gtest.h>
@@ -67,7 +66,6 @@ Started start(SurfaceMesh surface, const std::string& name) {
 struct Meshed {
   TetMesh out;
   size_t faces_left = 0;
-  size_t tree_left = 0;  // faces the tree-supported removals left to the tree-less ones
   TreelessCounts counts;
 };
 
@@ -78,7 +76,6 @@ Meshed mesh_surface(SurfaceMesh surface, const std::string& name, const RemovalO
   Meshed r;
   r.out = s.core.mesh;
   const size_t tree_left = remove_faces_tree_supported(front, s.tree, s.root, r.out).faces_left;
-  r.tree_left = tree_left;
   const size_t front_vertices = front.num_vertices();
   r.counts = remove_faces_treeless(front, s.tree, s.root, r.out, options);
   r.faces_left = r.counts.faces_left;
@@ -198,24 +195,6 @@ TEST(FrontTreeless, ShortGrowthClosesInFewerRounds) {
   EXPECT_EQ(short_first.counts.faces_left_by_attempt, std::vector<size_t>{0});
   EXPECT_LT(short_first.counts.rounds, default_only.counts.rounds);
   EXPECT_LT(short_first.counts.tets_deleted, default_only.counts.tets_deleted);
-}
-
-// spool with stall_rounds 2: the short-growth attempt stalls on a few
-// cavities (16 of 552 faces left), and the default goes on from there and
-// closes them, its work added to the counts.
-TEST(FrontTreeless, DefaultGoesOnWhereShortGrowthStallsOnAFewCavities) {
-  RemovalOptions impatient;
-  impatient.stall_rounds = 2;
-  const Meshed r = mesh_file("good/spool.off", impatient);
-  EXPECT_EQ(r.faces_left, 0u);
-  EXPECT_TRUE(r.counts.after_short_growth);
-  EXPECT_EQ(r.counts.strategy, TreelessStrategy::kDefault);
-  const std::vector<size_t>& left = r.counts.faces_left_by_attempt;
-  ASSERT_EQ(left.size(), 2u);
-  EXPECT_GT(left[0], 0u);
-  EXPECT_LE(4 * left[0], r.tree_left);
-  EXPECT_EQ(left[1], 0u);
-  EXPECT_GE(r.counts.rounds, 2 * impatient.stall_rounds);
 }
 
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
