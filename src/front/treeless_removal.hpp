@@ -100,11 +100,13 @@
 //    of growing (a thin flat cavity against the surface otherwise grows
 //    past kMaxGrownFaces every round and the tree pass rebuilds what it
 //    deleted: rotor r3).
-// The starting state is copied before the default runs, and a failed
-// attempt is copied while it is the best. The first strategy that closes
-// the front wins. When none does, the state of the attempt that left the
-// fewest faces (the earliest on ties) is kept. Inputs the default closes
-// are unchanged: the rescues never run.
+// The starting state is copied before the first attempt runs. The first
+// strategy that closes the front wins. When none does, the attempt that
+// left the fewest faces (the earliest on ties) is run again from the
+// starting state, unless it was the last (the rounds are deterministic;
+// keeping a copy of the best attempt instead held one more whole mesh at
+// the peak). Inputs the default closes are unchanged: the rescues never
+// run.
 //
 // Termination: each round either changes the mesh, spending budget (a new
 // vertex or a deletion) or making tets by tree-supported removal, which
