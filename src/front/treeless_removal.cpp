@@ -45,6 +45,14 @@ const char* strategy_name(TreelessStrategy strategy) {
   return "?";
 }
 
+int growth_steps(TreelessStrategy strategy) {
+  return strategy == TreelessStrategy::kShortGrowth ? kShortGrowthSteps : kMaxGrowthSteps;
+}
+
+size_t stall_rounds(TreelessStrategy strategy, size_t option) {
+  return strategy == TreelessStrategy::kShortGrowth ? std::min(option, kShortGrowthStall) : option;
+}
+
 TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& out,
                                      const RemovalOptions& options, RemovalMemo* memo) {
   PARTET_ASSERT(tree.size() == tree.owner.size() && tree.size() == tree.cls.size(), "tree arrays disagree");

@@ -24,7 +24,7 @@
 //  2. growth: otherwise the faces that do not see q and have a tet behind
 //     them (they are not surface triangles) are reopened: the tet behind
 //     each is deleted (Front::remove_tet), the component grows into it, and
-//     step 1 is tried again on the grown component, up to kMaxGrowth times
+//     step 1 is tried again on the grown component, up to kMaxGrowthSteps times
 //     (the component is left for this round when it grows beyond
 //     kMaxGrownFaces = 4 kMaxCavityFaces);
 //  3. partial cone: when the component still has no star point, q is added
@@ -65,7 +65,7 @@
 //
 // Short growth first (options.short_growth_first, on by default): before
 // the default, the rounds run with kShortGrowth: at most 4 growth steps per
-// fill instead of kMaxGrowth = 8, so that a cavity that is not star-shaped
+// fill instead of kMaxGrowthSteps = 8, so that a cavity that is not star-shaped
 // is split by its partial cone sooner instead of deleting (and the tree
 // pass rebuilding) more of the mesh around it. Where it closes, it closes
 // in fewer rounds (the one-round refinements of the CAD parts: t13_data
@@ -138,11 +138,18 @@ enum class TreelessStrategy : uint8_t {
   kConeFirst,       // as kUndoOvergrowth, and a partial cone before the first growth
   kSmallCavities,   // as kDefault, with components of at most 64 faces filled as one cavity
 };
+// Growth steps per fill (step 2 above), but with kShortGrowth.
+constexpr int kMaxGrowthSteps = 8;
 // TreelessStrategy::kShortGrowth: growth steps per fill, and rounds in a
 // row without a smaller front before the attempt gives up (at most
 // RemovalOptions::stall_rounds).
 constexpr int kShortGrowthSteps = 4;
 constexpr size_t kShortGrowthStall = 6;
+// The growth steps a fill may take with `strategy`.
+int growth_steps(TreelessStrategy strategy);
+// The rounds in a row without a smaller front after which an attempt with
+// `strategy` stalls, given RemovalOptions::stall_rounds.
+size_t stall_rounds(TreelessStrategy strategy, size_t option);
 constexpr TreelessStrategy kRescueStrategies[] = {TreelessStrategy::kUndoOvergrowth, TreelessStrategy::kConeFirst,
                                                   TreelessStrategy::kSmallCavities};
 const char* strategy_name(TreelessStrategy strategy);

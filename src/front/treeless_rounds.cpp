@@ -29,7 +29,6 @@ double squared_distance(const double* x, const double* y) {
 
 constexpr size_t kMaxCavityFaces = 256;  // largest component filled (and grown) as one cavity
 constexpr size_t kMaxSmallCavityFaces = 64;  // the same, with TreelessStrategy::kSmallCavities
-constexpr int kMaxGrowth = 8;
 constexpr size_t kSuspects = 16;  // blockers valid_tet keeps to test first
 constexpr size_t kMaxGrownFaces = 4 * kMaxCavityFaces;  // largest component a growth may reach
 constexpr size_t kPatchSizes[] = {64, 24, 8};           // patch cone sizes, largest first
@@ -345,6 +344,7 @@ void TreelessRemover::restore_reopened() {
 }
 
 bool TreelessRemover::fill(std::vector<uint32_t> faces) {
+  const int max_growth = growth_steps(strategy_);
   KernelPoint kernel;
   for (int growth = 0;; ++growth) {
     kernel = deepest_kernel_point(front_, faces);
@@ -383,7 +383,6 @@ bool TreelessRemover::fill(std::vector<uint32_t> faces) {
     const double* q = kernel.found ? kernel.point : candidates[2];
     reopened_.clear();
     restorable_ = true;
-    const int max_growth = strategy_ == TreelessStrategy::kShortGrowth ? kShortGrowthSteps : kMaxGrowth;
     if (growth == max_growth || !(reopen_blockers(faces, q, false) || reopen_blockers(faces, q, true))) break;
     // The grown component: the one holding an alive face of the old one or
     // a face the deletions added.
@@ -621,9 +620,7 @@ TreelessCounts TreelessRemover::run() {
   deletion_budget_ = 64 * front_.num_alive_faces() + 1024;
 
   const size_t max_cavity = strategy_ == TreelessStrategy::kSmallCavities ? kMaxSmallCavityFaces : kMaxCavityFaces;
-  const size_t stall_rounds = strategy_ == TreelessStrategy::kShortGrowth
-                                  ? std::min(options_.stall_rounds, kShortGrowthStall)
-                                  : options_.stall_rounds;
+  const size_t stall = stall_rounds(strategy_, options_.stall_rounds);
   std::vector<std::vector<uint32_t>> cavities;
   std::vector<uint32_t> stuck, seeds;
   bool changed = front_.num_alive_faces() > 0;
@@ -669,7 +666,7 @@ TreelessCounts TreelessRemover::run() {
     if (front_.num_alive_faces() < smallest) {
       smallest = front_.num_alive_faces();
       since_smallest = 0;
-    } else if (++since_smallest >= stall_rounds) {
+    } else if (++since_smallest >= stall) {
       counts_.stalled = true;
       break;
     }

@@ -31,13 +31,9 @@ std::string treeless_ending(const TreelessCounts& n) {
       text += (i == 0 ? "" : i + 1 == left.size() ? " and " : ", ") + std::to_string(left[i]);
     text += std::string(" faces; this front is what \"") + strategy_name(n.strategy) + "\" left";
   }
-  if (n.stalled) {
-    const size_t stall = n.strategy == TreelessStrategy::kShortGrowth
-                             ? std::min(RemovalOptions{}.stall_rounds, kShortGrowthStall)
-                             : RemovalOptions{}.stall_rounds;
-    text += (text.empty() ? "the tree-less removals " : ", ") + std::string("stalled: ") + std::to_string(stall) +
-            " rounds without a smaller front";
-  }
+  if (n.stalled)
+    text += (text.empty() ? "the tree-less removals " : ", ") + std::string("stalled: ") +
+            std::to_string(stall_rounds(n.strategy, RemovalOptions{}.stall_rounds)) + " rounds without a smaller front";
   return text.empty() ? text : " (" + text + ")";
 }
 
