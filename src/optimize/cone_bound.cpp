@@ -1,4 +1,4 @@
-// cone_quality_bound and cones_can_beat (see cone_bound.hpp): per cavity
+// cone_quality_bound, cones_can_beat and cones_can_keep_angle (see cone_bound.hpp): per cavity
 // tet its four outward unit face normals, per edge the outer faces counted,
 // and at the edges with two the tets' dihedral angles there summed.
 #include "optimize/cone_bound.hpp"
@@ -143,6 +143,23 @@ bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, d
   bool can = true;
   for_each_two_face_edge(edges, [&](double c, double s) {
     can = !(c > 0 && std::abs(s) < reach * std::sqrt(c * c + s * s));
+    return can;
+  });
+  return can;
+}
+
+bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle) {
+  if (!(angle >= 1e-6) || !(angle <= std::numbers::pi / 2)) return true;
+  // phi < beta for phi, beta in [0, pi] exactly when s >= 0 and the cross
+  // product of (cos beta, sin beta) and (c, s), |(c, s)| sin(phi - beta),
+  // is negative.
+  const double beta = 2 * angle * (1 - 1e-6);
+  const double cb = std::cos(beta), sb = std::sin(beta);
+  thread_local CavityEdges edges;
+  cavity_edges(topo, cavity, edges);
+  bool can = true;
+  for_each_two_face_edge(edges, [&](double c, double s) {
+    can = !(s >= 0 && s * cb - c * sb < 0);
     return can;
   });
   return can;

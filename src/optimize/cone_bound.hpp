@@ -32,4 +32,11 @@ double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cav
 // unit complex numbers (no trigonometry per edge).
 bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, double worst);
 
+// The same bound on angles: the smallest dihedral angle of a cone set is
+// at most phi / 2 at every such edge. False when some edge's phi (in
+// [0, pi]) is under twice `angle` (radians) by a relative margin of 1e-6:
+// then no vertex in `cavity` can make tets whose smallest dihedral angle
+// reaches `angle`. No verdict (true) for `angle` under 1e-6 or over pi / 2.
+bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle);
+
 }  // namespace partet

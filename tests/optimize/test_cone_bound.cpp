@@ -1,7 +1,8 @@
-// cone_quality_bound and cones_can_beat: the bound is reached by the
-// centroid of a regular tet, no cone set beats it (every interior vertex's
-// star is the cone set of its own position, and random points in the star
-// do no better), and cones_can_beat agrees with it on either side.
+// cone_quality_bound, cones_can_beat and cones_can_keep_angle: the bound
+// is reached by the centroid of a regular tet, no cone set beats it (every
+// interior vertex's star is the cone set of its own position, and random
+// points in the star do no better), and cones_can_beat and
+// cones_can_keep_angle agree with it on either side.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "check/quality.hpp"
 #include "core/predicates.hpp"
 #include "optimize/cone_bound.hpp"
 #include "optimize/tet_quality.hpp"
@@ -41,6 +43,21 @@ TEST(ConeBound, ARegularTetsCentroidConesReachIt) {
   EXPECT_NEAR(worst, kRegularSineScale * std::sin(std::acos(1.0 / 3) / 2), 1e-12);
   EXPECT_TRUE(cones_can_beat(topo, cavity, worst * 0.999));
   EXPECT_FALSE(cones_can_beat(topo, cavity, worst * 1.001));
+  // In angles: half the regular tet's dihedral angle, 35.26 degrees.
+  const double half = std::acos(1.0 / 3) / 2;
+  EXPECT_TRUE(cones_can_keep_angle(topo, cavity, half * 0.999));
+  EXPECT_FALSE(cones_can_keep_angle(topo, cavity, half * 1.001));
+}
+
+// The smallest dihedral angle of the star's tets with v at x (radians).
+double smallest_angle(const TetTopology& topo, const std::vector<uint32_t>& star) {
+  double smallest = 10;
+  for (uint32_t t : star) {
+    const uint32_t* v = topo.tet(t);
+    smallest = std::min(smallest,
+                        tet_shape(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3])).min_dihedral_rad);
+  }
+  return smallest;
 }
 
 // A 3 x 3 x 3 Kuhn lattice with its 8 interior vertices jittered.
@@ -70,6 +87,8 @@ TEST(ConeBound, NoPointInAStarBeatsIt) {
       double own = 1;
       for (uint32_t t : star) own = std::min(own, topo.quality(t));
       EXPECT_LE(own, bound + 1e-12);
+      // Whatever smallest angle a position reaches, the angle bound allows.
+      EXPECT_TRUE(cones_can_keep_angle(topo, star, smallest_angle(topo, star)));
       // And of any other point: the same tets with v moved there.
       std::uniform_real_distribution<double> step(-0.3, 0.3);
       const double home[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
@@ -79,6 +98,9 @@ TEST(ConeBound, NoPointInAStarBeatsIt) {
         double worst = 1;
         for (uint32_t t : star) worst = std::min(worst, topo.quality(t));
         EXPECT_LE(worst, bound + 1e-12);
+        if (test::all_positive(m)) {
+          EXPECT_TRUE(cones_can_keep_angle(topo, star, smallest_angle(topo, star)));
+        }
       }
       topo.move_vertex(v, home);
       EXPECT_TRUE(cones_can_beat(topo, star, std::min(bound, quality_of_angle(45)) * 0.999));
