@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "core/error.hpp"
@@ -222,9 +223,13 @@ bool Remover::try_face(uint32_t f, bool full) {
       bool inside = true;
       for (int k = 0; k < 3; ++k) inside = inside && box_lo_[k] <= q[k] && q[k] <= box_hi_[k];
       if (!inside || base_side(q) <= 0) continue;
-      const double shape = shape_measure(pa, pb, pc, q);
-      if (shape < options_.min_quality) continue;
       const int closed = static_cast<int>(std::count(closers_.begin(), closers_.end(), v));
+      // The shape is measured in doubles: a tet too flat for them (its
+      // height under the coordinates' rounding) may measure 0 or less
+      // though orient3d is positive (RemovalOptions::close_flat_cavities).
+      double shape = shape_measure(pa, pb, pc, q);
+      if (closed == 3 && options_.close_flat_cavities) shape = std::max(shape, std::numeric_limits<double>::min());
+      if (shape < options_.min_quality) continue;
       targets_.push_back({shape * (1 + closed), v});
     }
   std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {

@@ -14,7 +14,10 @@
 //    edge, 1 for the regular tet) and `closed` counts the tet's other faces
 //    whose twins are alive (it closes them): closing the front is preferred
 //    unless the shape is much worse. Targets with q < min_quality are
-//    dropped;
+//    dropped; with close_flat_cavities, a tet that closes the base's three
+//    neighbours across its edges (it fills a closed cavity of four faces,
+//    which no other vertex can) stays even when q, measured in doubles, is
+//    0 or below, the last target;
 //  - the first target passing check_removal (removal_checks.hpp) makes the
 //    tet (a, b, c, p) (positively oriented), appended to `out`; the front
 //    is updated and boundary or too-close leaves whose front became empty
@@ -63,6 +66,14 @@ struct RemovalOptions {
   double reach = 0.6;       // neighbourhood half-size in longest base edges
   double ahead = 0.5;       // its centre's height above the base face, the same unit
   double min_quality = 0;   // targets whose tet has q below this are ignored
+  // Keep as a target a tet that closes a cavity of four faces when its q
+  // measures 0 or less in doubles (see above). Only the tree-less rounds'
+  // last pass sets it: such a tet, too flat for any point to lie inside
+  // it, is the only way to close that cavity (a 2-rank run left one, a
+  // positive tet 1e-18 high, on stress-check seed 1790), but made in every
+  // pass it turns the CAD parts' flat cavities into tets the tree-less
+  // rounds then grow around (pinion r2 31 -> 57 s, t13 r2 14 -> 34 s).
+  bool close_flat_cavities = false;
   // Tree-less removals only: rounds in a row without a smaller front before
   // they give up (treeless_removal.hpp; the corpus closes in at most 25
   // rounds; t13 r2 closes in 132, with new smallest fronts more than 32

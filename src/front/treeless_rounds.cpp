@@ -49,6 +49,11 @@ class TreelessRemover {
 
  private:
   void tree_pass();
+  // The last pass when the rounds leave faces: tree-supported removals
+  // that close flat cavities of four faces (RemovalOptions::
+  // close_flat_cavities), with a memo of their own (the rounds' memo has
+  // these faces waiting on unchanged neighbourhoods).
+  void flat_cavity_pass();
   // Tree-supported removals starting from the given faces only.
   void local_tree_pass(const std::vector<uint32_t>& seeds);
   // Sum of the squared edge lengths of face f.
@@ -140,6 +145,14 @@ void TreelessRemover::tree_pass() {
   counts_.tree_tets += n.tets;
   counts_.checks += n.checks;
   counts_.foreign_faces = n.foreign_faces;
+}
+
+void TreelessRemover::flat_cavity_pass() {
+  RemovalOptions options = options_;
+  options.close_flat_cavities = true;
+  const RemovalCounts n = remove_faces_tree_supported(front_, tree_, root_, out_, options, nullptr, nullptr);
+  counts_.tree_tets += n.tets;
+  counts_.checks += n.checks;
 }
 
 void TreelessRemover::local_tree_pass(const std::vector<uint32_t>& seeds) {
@@ -671,6 +684,7 @@ TreelessCounts TreelessRemover::run() {
       break;
     }
   }
+  if (front_.num_alive_faces() > 0) flat_cavity_pass();
   if (incidence_) incidence_->drop_dead_tets(out_);
   counts_.faces_left = front_.num_alive_faces();
   counts_.strategy = strategy_;

@@ -6,7 +6,8 @@
 // with the leaves back on this rank continues the same front; a memo of
 // failures spares a later call the faces whose neighbourhood is unchanged;
 // two ranks' copies of a front merge into what replaying their tets gives;
-// compacting the front between calls changes no tet; a failed removal
+// compacting the front between calls changes no tet; a closed cavity of
+// four faces too flat for doubles' shape measure still gets its tet; a failed removal
 // whose blocker is still there (what lets a call skip rechecking it) still
 // fails on the evolving front.
 #include <gtest/gtest.h>
@@ -120,6 +121,69 @@ TEST(FrontRemoval, SingleTetSurfaceMakesOneTet) {
   for (size_t leaf = 0; leaf < m.tree.size(); ++leaf) {
     EXPECT_TRUE(front.leaf_front_empty(leaf));
     EXPECT_NE(m.tree.cls[leaf], LeafClass::kBoundary) << "leaf " << leaf;
+  }
+}
+
+// The four faces a 2-rank run left on a random surface (stress-check seed
+// 1790): a positive tet (exact orient3d 3e-21) whose height, about 1e-18,
+// is under the rounding of its coordinates, so no point lies inside it.
+// Only its own tet closes it (the tree-less rounds' last pass makes it),
+// and in the root cube of that run the fourth
+// vertex lies in one face's neighbourhood box only, where its shape
+// measures -7e-20 in doubles. As a surface of its own it is flat to
+// doubles (diagnose_surface would orient it by the rounding of its
+// volume), so the front is made from it as given.
+TEST(FrontRemoval, FlatClosedCavityGetsItsTet) {
+  Meshing m;
+  // As the front left them (each face sees the fourth vertex on its
+  // positive side), reversed into an outward surface.
+  m.surface.xyz = {-0.24090284901187772, -0.15037344580850626, 0.17218002581386063,
+                   -0.23875456366867143, -0.15298006311673162, 0.17305060897182561,
+                   -0.12522639673175975, -0.13959095825943135, -0.067007589601047038,
+                   -0.12952296741817235, -0.13437772364298059, -0.068748755916977045};
+  m.surface.tris = {0, 2, 1, 3, 1, 2, 3, 0, 1, 0, 3, 2};
+  const SurfaceMesh& s = m.surface;
+  ASSERT_LT(orient3d(s.point(0), s.point(2), s.point(1), s.point(3)), 0);
+  // The root cube of the whole surface the run meshed.
+  const double bbox[6] = {-0.25379256, -0.15558668, -0.31315987, 0.25379256, 0.15558668, 0.31315987};
+  m.root = make_root_cube(bbox);
+  m.sizing = size_vertices(m.surface, m.root, SizingOptions{});
+  m.tree = build_octree(m.sizing.grid, m.sizing.level);
+  refine_for_triangles(m.tree, m.surface, m.root, m.sizing.level);
+  balance_octree(m.tree);
+  classify_leaves(m.tree, m.surface, m.root, m.sizing.size);
+  m.core = template_interior(m.tree, m.root);
+  ASSERT_EQ(m.core.mesh.num_tets(), 0u);
+  m.initial = make_initial_front(m.tree, m.root, m.core, m.surface);
+  // The removals' passes leave it (their shape measure says flat) ...
+  {
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    const RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out);
+    EXPECT_EQ(n.tets, 0u);
+    EXPECT_EQ(n.faces_left, 4u);
+  }
+  // ... a pass that closes flat cavities makes its tet ...
+  {
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    RemovalOptions options;
+    options.close_flat_cavities = true;
+    const RemovalCounts n = remove_faces_tree_supported(front, m.tree, m.root, out, options);
+    EXPECT_EQ(n.tets, 1u);
+    EXPECT_EQ(n.faces_left, 0u);
+    ValidationResult partial = validate_mesh(out, nullptr);
+    EXPECT_TRUE(partial.valid) << format_text(partial);
+  }
+  // ... and the tree-less removals, whose rounds find no point inside it,
+  // end with that pass.
+  {
+    Front front(m.initial, m.tree, m.root);
+    TetMesh out = m.core.mesh;
+    const TreelessCounts n = remove_faces_treeless(front, m.tree, m.root, out);
+    EXPECT_EQ(n.faces_left, 0u);
+    EXPECT_EQ(n.vertices_added, 0u);
+    EXPECT_EQ(out.num_tets(), 1u);
   }
 }
 
