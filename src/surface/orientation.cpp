@@ -17,7 +17,10 @@ void flip_triangle(SurfaceMesh& s, size_t t) { std::swap(s.tris[3 * t + 1], s.tr
 
 // Signed volume enclosed by each shell: sum of det(a-o, b-o, c-o)/6 with o a
 // vertex of the shell (fewer cancellations), Neumaier-compensated. Also the
-// sum of absolute terms, for the size of the rounding error.
+// sum of the determinants' permanents (their six products in absolute
+// value) over 6, for the size of the rounding error: each determinant's is
+// a few ulps of its permanent, which can dwarf the determinant itself (a
+// tet 1e-18 high across 0.27, whose volume's sign in doubles is noise).
 void shell_volumes(const SurfaceMesh& s, const ShellInfo& info, std::vector<double>& vol,
                    std::vector<double>& magnitude) {
   vol.assign(info.count, 0.0);
@@ -35,10 +38,13 @@ void shell_volumes(const SurfaceMesh& s, const ShellInfo& info, std::vector<doub
     double bx = b[0] - o[0], by = b[1] - o[1], bz = b[2] - o[2];
     double cx = c[0] - o[0], cy = c[1] - o[1], cz = c[2] - o[2];
     double term = (ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)) / 6.0;
+    const double permanent = std::fabs(ax) * (std::fabs(by * cz) + std::fabs(bz * cy)) +
+                             std::fabs(ay) * (std::fabs(bx * cz) + std::fabs(bz * cx)) +
+                             std::fabs(az) * (std::fabs(bx * cy) + std::fabs(by * cx));
     double sum = vol[sh] + term;
     comp[sh] += std::fabs(vol[sh]) >= std::fabs(term) ? (vol[sh] - sum) + term : (term - sum) + vol[sh];
     vol[sh] = sum;
-    magnitude[sh] += std::fabs(term);
+    magnitude[sh] += permanent / 6.0;
   }
   for (uint32_t sh = 0; sh < info.count; ++sh) vol[sh] += comp[sh];
 }
@@ -91,7 +97,9 @@ ShellInfo orient_shells(SurfaceMesh& surface, const EdgeTable& edges, const std:
   std::vector<uint8_t> flip_shell(info.count, 0);
   for (uint32_t sh = 0; sh < info.count; ++sh) {
     // The rounding error of the sum is far below 1e-12 of its magnitude; a
-    // closed non-self-intersecting shell encloses a volume far above that.
+    // closed non-self-intersecting shell encloses a volume far above that
+    // (one that does not is flat to doubles: its orientation would be a
+    // guess, and so would every volume check on its mesh).
     if (!(std::fabs(info.volume[sh]) > 1e-12 * magnitude[sh])) {
       uint32_t t0 = 0;
       while (info.shell_of_triangle[t0] != sh) ++t0;
