@@ -87,6 +87,13 @@ struct RemovalOptions {
   // Tree-less removals only: try TreelessStrategy::kShortGrowth before the
   // default strategy (treeless_removal.hpp, "Short growth first").
   bool short_growth_first = true;
+  // Tree-less removals only: the rescue strategies alone, for a state from
+  // which short growth and the default already failed.
+  bool rescues_only = false;
+  // Tree-less removals only: when no strategy closes the front, run the one
+  // that left the fewest faces again (its mesh and front are what the call
+  // leaves); false when the caller discards them anyway.
+  bool rerun_best = true;
 };
 
 // A failure time no face has: never failed.

@@ -59,10 +59,13 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
   std::vector<TreelessStrategy> strategies;
-  if (options.short_growth_first) strategies.push_back(TreelessStrategy::kShortGrowth);
-  strategies.push_back(TreelessStrategy::kDefault);
+  if (!options.rescues_only) {
+    if (options.short_growth_first) strategies.push_back(TreelessStrategy::kShortGrowth);
+    strategies.push_back(TreelessStrategy::kDefault);
+  }
   const size_t rescues = std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kRescueStrategies));
   strategies.insert(strategies.end(), kRescueStrategies, kRescueStrategies + rescues);
+  if (strategies.empty()) strategies.push_back(TreelessStrategy::kDefault);
   if (strategies.size() == 1) {
     TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategies[0]);
     n.faces_left_by_attempt = {n.faces_left};
@@ -84,7 +87,7 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   // one more whole mesh at the peak: blobby r4 2,119 -> 2,699 MB).
   const auto fewest = std::min_element(faces_left.begin(), faces_left.end());
   const size_t best = static_cast<size_t>(fewest - faces_left.begin());
-  if (best + 1 < strategies.size()) {
+  if (options.rerun_best && best + 1 < strategies.size()) {
     start.restore(front, tree, out, m);
     n = run_treeless_rounds(front, tree, root, out, options, m, strategies[best]);
     PARTET_ASSERT(n.faces_left == *fewest, "a tree-less attempt run again left other faces");

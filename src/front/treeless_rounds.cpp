@@ -49,10 +49,8 @@ class TreelessRemover {
 
  private:
   void tree_pass();
-  // The last pass when the rounds leave faces: tree-supported removals
-  // that close flat cavities of four faces (RemovalOptions::
-  // close_flat_cavities), with a memo of their own (the rounds' memo has
-  // these faces waiting on unchanged neighbourhoods).
+  // The last pass when the rounds leave faces (RemovalOptions::
+  // close_flat_cavities), with a memo of its own: the rounds' has them waiting.
   void flat_cavity_pass();
   // Tree-supported removals starting from the given faces only.
   void local_tree_pass(const std::vector<uint32_t>& seeds);

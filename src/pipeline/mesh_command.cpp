@@ -368,15 +368,26 @@ OptimizeOptions optimize_options(const MeshOptions& o) {
   return out;
 }
 
+// Which attempt of run_mesh this is (see run_mesh).
+enum class TreeAttempt {
+  kFirst,           // the tree refined for a thin core, if refined: short growth and the default only
+  kFirstTree,       // the first tree, every strategy
+  kRefinedRescues,  // the refined tree again, the rescue strategies only
+};
+
 // Thrown on every rank when the front did not close on a tree that
 // refine_thin_core refined: run_mesh meshes again without the refinement.
 struct ThinCoreRetry {};
+// Thrown on every rank when it did not close on the first tree either:
+// run_mesh tries the refined tree's rescue strategies.
+struct RefinedRescueRetry {};
 
-int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool retried) {
+int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, TreeAttempt attempt) {
   RunReport report(comm, log);
   report.set("input", options.input);
   report.set("options", options_json(options));
-  if (retried) report.set("retried without the thin-core refinement", true);
+  if (attempt == TreeAttempt::kFirstTree) report.set("retried without the thin-core refinement", true);
+  if (attempt == TreeAttempt::kRefinedRescues) report.set("retried with the rescue strategies on the refined tree", true);
   int code = kExitOk;
   std::string message;
   MeshState s;
@@ -535,14 +546,25 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
         return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
+        // On a refined tree, the rescues wait for the first tree (every
+        // corpus input whose tree is refined closes without them; the
+        // needle family of stress-check failed on the refined tree for
+        // minutes, then closed on the first in seconds).
+        RemovalOptions treeless_options;
+        if (attempt == TreeAttempt::kFirst && s.thin_core_refined) {
+          treeless_options.rescues = 0;
+          treeless_options.rerun_best = false;  // a failure here is discarded (ThinCoreRetry)
+        }
+        treeless_options.rescues_only = attempt == TreeAttempt::kRefinedRescues;
         report.run_step("face removals (tree-less)", [&] {
           return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note,
-                               options.treeless_on_ranks);
+                               options.treeless_on_ranks, treeless_options);
         });
       }
       if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
-      if (faces_left > 0 && s.thin_core_refined) throw ThinCoreRetry{};
+      if (faces_left > 0 && s.thin_core_refined && attempt == TreeAttempt::kFirst) throw ThinCoreRetry{};
+      if (faces_left > 0 && attempt == TreeAttempt::kFirstTree && options.treeless) throw RefinedRescueRetry{};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
@@ -614,17 +636,25 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, bool
 
 // Closure comes first: the thin-core refinement is for quality, and the
 // first tree is what meshed before it, so a front that does not close on
-// the refined tree is meshed again on the first one.
+// the refined tree with short growth or the default strategy is meshed
+// again on the first one, with every strategy; when that fails too, the
+// refined tree's rescue strategies have their turn.
 int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   try {
-    return mesh_once(options, comm, log, false);
+    return mesh_once(options, comm, log, TreeAttempt::kFirst);
   } catch (const ThinCoreRetry&) {
     log.note(file_basename(options.input) +
              ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
-    MeshOptions first = options;
-    first.min_core = 0;
-    return mesh_once(first, comm, log, true);
   }
+  MeshOptions first = options;
+  first.min_core = 0;
+  try {
+    return mesh_once(first, comm, log, TreeAttempt::kFirstTree);
+  } catch (const RefinedRescueRetry&) {
+    log.note(file_basename(options.input) +
+             ": the front did not close on the first tree either: the rescue strategies on the refined tree");
+  }
+  return mesh_once(options, comm, log, TreeAttempt::kRefinedRescues);
 }
 
 }  // namespace partet

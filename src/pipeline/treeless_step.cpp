@@ -212,12 +212,12 @@ void take_work(const std::vector<std::string>& images, size_t first_new, const s
 
 ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                     TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note,
-                    bool on_ranks) {
+                    bool on_ranks, const RemovalOptions& options) {
   const bool root_rank = comm.rank() == 0;
   if (comm.size() == 1 || !on_ranks) {
     if (!root_rank) return ojson::object();
     std::fill(tree.owner.begin(), tree.owner.end(), 0);
-    const TreelessCounts n = remove_faces_treeless(*front, tree, root, mesh, {}, &memo);
+    const TreelessCounts n = remove_faces_treeless(*front, tree, root, mesh, options, &memo);
     note = treeless_ending(n);
     return counts_json(n);
   }
@@ -288,7 +288,7 @@ ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree&
   std::fill(tree.owner.begin(), tree.owner.end(), 0);
   TreelessCounts rest;
   rest.faces_left_by_attempt = {0};
-  if (front->num_alive_faces() > 0) rest = remove_faces_treeless(*front, tree, root, mesh, {}, &memo);
+  if (front->num_alive_faces() > 0) rest = remove_faces_treeless(*front, tree, root, mesh, options, &memo);
   const auto into = work_of(rest), from = work_of(total);
   for (size_t k = 0; k < into.size(); ++k) *into[k] += *from[k];
   note = treeless_ending(rest);

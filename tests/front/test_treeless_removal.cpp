@@ -164,6 +164,16 @@ TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
   ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 5u);
   for (size_t i = 0; i < 4; ++i) EXPECT_GT(rescued.counts.faces_left_by_attempt[i], 0u);
 
+  // The rescues alone (what a refined tree gets after the first tree
+  // failed too) make the same attempts from the same state.
+  impatient.rescues_only = true;
+  const Meshed rescues = mesh_surface(joint, "good/joint.off r1, stall 1, rescues only", impatient);
+  impatient.rescues_only = false;
+  EXPECT_EQ(rescues.counts.faces_left_by_attempt,
+            std::vector<size_t>(rescued.counts.faces_left_by_attempt.begin() + 2,
+                                rescued.counts.faces_left_by_attempt.end()));
+  EXPECT_EQ(rescues.out.tets, rescued.out.tets);
+
   impatient.rescues = 1;
   const Meshed best = mesh_surface(joint, "good/joint.off r1, stall 1, one rescue", impatient);
   impatient.rescues = 0;
