@@ -65,7 +65,7 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   }
   const size_t rescues = std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kRescueStrategies));
   strategies.insert(strategies.end(), kRescueStrategies, kRescueStrategies + rescues);
-  if (strategies.empty()) strategies.push_back(TreelessStrategy::kDefault);
+  PARTET_ASSERT(!strategies.empty(), "the rescue strategies alone, with none of them");
   if (strategies.size() == 1) {
     TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategies[0]);
     n.faces_left_by_attempt = {n.faces_left};

@@ -1,6 +1,7 @@
-// cone_quality_bound, cones_can_beat and cones_can_keep_angle (see cone_bound.hpp): per cavity
-// tet its four outward unit face normals, per edge the outer faces counted,
-// and at the edges with two the tets' dihedral angles there summed.
+// cone_quality_bound, cones_can_beat and cones_can_keep_angle (see
+// cone_bound.hpp): per cavity tet its four outward unit face normals, per
+// edge the outer faces counted, and at the edges with two the tets'
+// dihedral angles there summed.
 #include "optimize/cone_bound.hpp"
 
 #include <algorithm>
@@ -116,6 +117,20 @@ void for_each_two_face_edge(const CavityEdges& edges, Edge&& edge) {
   }
 }
 
+// True when `below(c, s)` holds at none of the cavity's edges where two
+// outer faces meet (stopping at the first where it does).
+template <class Below>
+bool no_two_face_edge(const TetTopology& topo, std::span<const uint32_t> cavity, Below&& below) {
+  thread_local CavityEdges edges;  // scratch: no allocation per cavity
+  cavity_edges(topo, cavity, edges);
+  bool none = true;
+  for_each_two_face_edge(edges, [&](double c, double s) {
+    none = !below(c, s);
+    return none;
+  });
+  return none;
+}
+
 }  // namespace
 
 double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cavity) {
@@ -138,14 +153,8 @@ bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, d
   if (!(worst >= 1e-4) || !(worst <= quality_of_angle(45))) return true;
   const double sine = worst * (1 - 1e-6) / kRegularSineScale;
   const double reach = 2 * sine * std::sqrt(1 - sine * sine);  // sin(2 alpha)
-  thread_local CavityEdges edges;  // scratch: no allocation per cavity
-  cavity_edges(topo, cavity, edges);
-  bool can = true;
-  for_each_two_face_edge(edges, [&](double c, double s) {
-    can = !(c > 0 && std::abs(s) < reach * std::sqrt(c * c + s * s));
-    return can;
-  });
-  return can;
+  return no_two_face_edge(topo, cavity,
+                          [&](double c, double s) { return c > 0 && std::abs(s) < reach * std::sqrt(c * c + s * s); });
 }
 
 bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle) {
@@ -155,14 +164,7 @@ bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cav
   // is negative.
   const double beta = 2 * angle * (1 - 1e-6);
   const double cb = std::cos(beta), sb = std::sin(beta);
-  thread_local CavityEdges edges;
-  cavity_edges(topo, cavity, edges);
-  bool can = true;
-  for_each_two_face_edge(edges, [&](double c, double s) {
-    can = !(s >= 0 && s * cb - c * sb < 0);
-    return can;
-  });
-  return can;
+  return no_two_face_edge(topo, cavity, [&](double c, double s) { return s >= 0 && s * cb - c * sb < 0; });
 }
 
 }  // namespace partet

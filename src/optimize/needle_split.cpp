@@ -43,6 +43,11 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
     s.old_tets.insert(s.old_tets.end(), topo.tet(c), topo.tet(c) + 4);
     old_sum += radius_ratio_of(topo, topo.tet(c));
   }
+  const AngleSummary before = summarize_angles(topo, s.old_tets);
+  // Where the ring's angle at an outer edge is under twice its smallest, no
+  // position of m keeps that smallest angle (cone_bound.hpp): refused
+  // before m is made (a third of handle r1's trials, same meshes).
+  if (!cones_can_keep_angle(topo, s.cavity, before.smallest)) return false;
   const uint32_t m = topo.add_vertex(middle, kOptimizerVertexId | topo.num_vertices());
   for (uint32_t c : s.cavity)
     for (uint32_t end : {ring.a, ring.b}) {
@@ -55,14 +60,6 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
       }
       s.new_tets.insert(s.new_tets.end(), tet, tet + 4);
     }
-  const AngleSummary before = summarize_angles(topo, s.old_tets);
-  // Where the ring's angle at an outer edge is under twice its smallest, no
-  // position of m keeps that smallest angle (cone_bound.hpp): refused
-  // without the trial (a third of handle r1's trials, same meshes).
-  if (!cones_can_keep_angle(topo, s.cavity, before.smallest)) {
-    topo.remove_last_vertex();
-    return false;
-  }
   apply_cone(topo, s.cavity, s.old_tets, s.new_tets, scratch, s.trial);
   topo.tet_vertices(s.trial.created, s.quads);
   double new_sum = 0;

@@ -50,11 +50,10 @@ struct Meshing {
   InitialFront initial;
 };
 
-// The pipeline of src/pipeline/mesh_command.cpp up to the initial front.
-void prepare(Meshing& m, SurfaceMesh surface, double size_factor) {
-  m.surface = std::move(surface);
-  SurfaceSummary summary = diagnose_surface(m.surface, "test surface");
-  m.root = make_root_cube(summary.bbox);
+// The pipeline of src/pipeline/mesh_command.cpp from the root cube around
+// `bbox` up to the initial front, on m.surface as it is.
+void prepare_from_root(Meshing& m, const double* bbox, double size_factor) {
+  m.root = make_root_cube(bbox);
   SizingOptions sizing_options;
   sizing_options.size_factor = size_factor;
   m.sizing = size_vertices(m.surface, m.root, sizing_options);
@@ -65,6 +64,13 @@ void prepare(Meshing& m, SurfaceMesh surface, double size_factor) {
   classify_leaves(m.tree, m.surface, m.root, sizing.size);
   m.core = template_interior(m.tree, m.root);
   m.initial = make_initial_front(m.tree, m.root, m.core, m.surface);
+}
+
+// The whole pipeline up to the initial front, the surface diagnosed first.
+void prepare(Meshing& m, SurfaceMesh surface, double size_factor) {
+  m.surface = std::move(surface);
+  const SurfaceSummary summary = diagnose_surface(m.surface, "test surface");
+  prepare_from_root(m, summary.bbox, size_factor);
 }
 
 // Core plus new tets valid as a partial mesh; filling the surface when the
@@ -146,15 +152,8 @@ TEST(FrontRemoval, FlatClosedCavityGetsItsTet) {
   ASSERT_LT(orient3d(s.point(0), s.point(2), s.point(1), s.point(3)), 0);
   // The root cube of the whole surface the run meshed.
   const double bbox[6] = {-0.25379256, -0.15558668, -0.31315987, 0.25379256, 0.15558668, 0.31315987};
-  m.root = make_root_cube(bbox);
-  m.sizing = size_vertices(m.surface, m.root, SizingOptions{});
-  m.tree = build_octree(m.sizing.grid, m.sizing.level);
-  refine_for_triangles(m.tree, m.surface, m.root, m.sizing.level);
-  balance_octree(m.tree);
-  classify_leaves(m.tree, m.surface, m.root, m.sizing.size);
-  m.core = template_interior(m.tree, m.root);
+  prepare_from_root(m, bbox, 1);
   ASSERT_EQ(m.core.mesh.num_tets(), 0u);
-  m.initial = make_initial_front(m.tree, m.root, m.core, m.surface);
   // The removals' passes leave it (their shape measure says flat) ...
   {
     Front front(m.initial, m.tree, m.root);
