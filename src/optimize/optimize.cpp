@@ -224,12 +224,18 @@ constexpr double kRelaxBelow = 0.75;
 // `frozen`, are free), ascending, each once.
 std::vector<uint32_t> free_vertices_of(const TetTopology& topo, const std::vector<uint32_t>& tets,
                                        const std::vector<uint8_t>& frozen) {
+  // Marks take each vertex once (a vertex is in many of the tets), so only
+  // the distinct ones are sorted.
+  std::vector<uint8_t> taken(topo.num_vertices(), 0);
   std::vector<uint32_t> vertices;
   for (uint32_t t : tets)
-    for (int k = 0; k < 4; ++k)
-      if (topo.tet(t)[k] >= frozen.size() || !frozen[topo.tet(t)[k]]) vertices.push_back(topo.tet(t)[k]);
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t v = topo.tet(t)[k];
+      if ((v < frozen.size() && frozen[v]) || taken[v]) continue;
+      taken[v] = 1;
+      vertices.push_back(v);
+    }
   std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   return vertices;
 }
 
