@@ -48,6 +48,16 @@ RunResult run_partet(const std::string& args) {
   return r;
 }
 
+SurfaceMesh flat_tet_of_seed_1790() {
+  SurfaceMesh s;
+  s.xyz = {-0.24090284901187772, -0.15037344580850626, 0.17218002581386063,
+           -0.23875456366867143, -0.15298006311673162, 0.17305060897182561,
+           -0.12522639673175975, -0.13959095825943135, -0.067007589601047038,
+           -0.12952296741817235, -0.13437772364298059, -0.068748755916977045};
+  s.tris = {0, 2, 1, 3, 1, 2, 3, 0, 1, 0, 3, 2};
+  return s;
+}
+
 SurfaceMesh box_surface(double a, double b, double c) {
   SurfaceMesh s;
   for (int i = 0; i < 8; ++i) {

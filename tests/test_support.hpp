@@ -34,6 +34,11 @@ SurfaceMesh shifted_box(double lo, double size);
 // Appends `b` to `a` as a separate shell (its vertices renumbered).
 void append(SurfaceMesh& a, const SurfaceMesh& b);
 
+// The four faces a 2-rank run left on stress-check seed 1790, reversed
+// into an outward surface: a tet positive by exact orient3d (3e-21) but
+// about 1e-18 high across 0.27, under the rounding of its coordinates.
+SurfaceMesh flat_tet_of_seed_1790();
+
 // The unit cube [0,1]^3 split into 6 positive tets around the 0-7 diagonal,
 // with its 12 boundary triangles (those of box_surface()).
 TetMesh cube_tets();

@@ -141,13 +141,7 @@ TEST(FrontRemoval, SingleTetSurfaceMakesOneTet) {
 // volume), so the front is made from it as given.
 TEST(FrontRemoval, FlatClosedCavityGetsItsTet) {
   Meshing m;
-  // As the front left them (each face sees the fourth vertex on its
-  // positive side), reversed into an outward surface.
-  m.surface.xyz = {-0.24090284901187772, -0.15037344580850626, 0.17218002581386063,
-                   -0.23875456366867143, -0.15298006311673162, 0.17305060897182561,
-                   -0.12522639673175975, -0.13959095825943135, -0.067007589601047038,
-                   -0.12952296741817235, -0.13437772364298059, -0.068748755916977045};
-  m.surface.tris = {0, 2, 1, 3, 1, 2, 3, 0, 1, 0, 3, 2};
+  m.surface = test::flat_tet_of_seed_1790();
   const SurfaceMesh& s = m.surface;
   ASSERT_LT(orient3d(s.point(0), s.point(2), s.point(1), s.point(3)), 0);
   // The root cube of the whole surface the run meshed.

@@ -49,7 +49,7 @@ TEST(ConeBound, ARegularTetsCentroidConesReachIt) {
   EXPECT_FALSE(cones_can_keep_angle(topo, cavity, half * 1.001));
 }
 
-// The smallest dihedral angle of the star's tets with v at x (radians).
+// The smallest dihedral angle of the star's tets (radians).
 double smallest_angle(const TetTopology& topo, const std::vector<uint32_t>& star) {
   double smallest = 10;
   for (uint32_t t : star) {

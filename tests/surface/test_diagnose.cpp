@@ -103,12 +103,7 @@ TEST(Diagnose, BoxIsAcceptedWithItsVolume) {
 // sign in doubles is rounding, so it would be oriented by a guess. Either
 // way round it is refused as flat.
 TEST(Diagnose, ShellFlatToDoublesIsRefused) {
-  SurfaceMesh s;
-  s.xyz = {-0.24090284901187772, -0.15037344580850626, 0.17218002581386063,
-           -0.23875456366867143, -0.15298006311673162, 0.17305060897182561,
-           -0.12522639673175975, -0.13959095825943135, -0.067007589601047038,
-           -0.12952296741817235, -0.13437772364298059, -0.068748755916977045};
-  s.tris = {0, 2, 1, 3, 1, 2, 3, 0, 1, 0, 3, 2};
+  SurfaceMesh s = test::flat_tet_of_seed_1790();
   ASSERT_NE(orient3d(s.point(0), s.point(1), s.point(2), s.point(3)), 0);
   EXPECT_NE(diagnosis_error(s).find("it is flat"), std::string::npos);
   flip_all(s);
