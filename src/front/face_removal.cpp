@@ -59,6 +59,61 @@ double shape_measure(const double* a, const double* b, const double* c, const do
   return std::sqrt(2.0) * orient3d_value(a, b, c, p) / (rms * rms * rms);
 }
 
+// The target order's weights (face_removal.hpp): a face closed counts as
+// this much sphere height, in base circumradii, and q (at most 1) this much.
+constexpr double kClosingWeight = 0.05;
+constexpr double kShapeWeight = 0.01;
+
+// The spheres through a base face (a, b, c): their centres lie on the line
+// through the face's circumcentre along its normal.
+class BaseSpheres {
+ public:
+  BaseSpheres(const double* a, const double* b, const double* c) : a_(a) {
+    double u[3], w[3];
+    for (int k = 0; k < 3; ++k) {
+      u[k] = b[k] - a[k];
+      w[k] = c[k] - a[k];
+    }
+    cross(u, w, normal_);
+    const double uu = dot(u, u), ww = dot(w, w), nn = dot(normal_, normal_);
+    // The circumcentre: a + ((|u|² w - |w|² u) × n) / (2 |n|²).
+    double m[3], x[3];
+    for (int k = 0; k < 3; ++k) m[k] = uu * w[k] - ww * u[k];
+    cross(m, normal_, x);
+    for (int k = 0; k < 3; ++k) centre_[k] = a[k] + x[k] / (2 * nn);
+    squared_radius_ = squared_distance(centre_, a);
+    scale_ = std::sqrt(nn / squared_radius_);
+  }
+
+  // The height of the centre of the sphere through the face and q (q on
+  // the normal's side) above the circumcentre, along the unit normal, in
+  // circumradii: the smallest is the vertex the sphere meets first as it
+  // sweeps from the face's plane to the normal's side, so that no other
+  // target lies inside its sphere. +inf (last) when doubles cannot tell
+  // (a flat face, or q's height under their rounding): NaN never reaches
+  // the sort.
+  double height(const double* q) const {
+    const double d[3] = {q[0] - a_[0], q[1] - a_[1], q[2] - a_[2]};
+    const double above = dot(normal_, d);
+    const double h = (squared_distance(q, centre_) - squared_radius_) * scale_ / (2 * above);
+    return above > 0 && !std::isnan(h) ? h : std::numeric_limits<double>::infinity();
+  }
+
+ private:
+  static double dot(const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+  static void cross(const double* x, const double* y, double* z) {
+    z[0] = x[1] * y[2] - x[2] * y[1];
+    z[1] = x[2] * y[0] - x[0] * y[2];
+    z[2] = x[0] * y[1] - x[1] * y[0];
+  }
+
+  const double* a_;
+  double normal_[3];
+  double centre_[3];
+  double squared_radius_;
+  double scale_;  // |n| / circumradius: turns the height along n into circumradii
+};
+
 // Everything one call keeps between faces.
 class Remover {
  public:
@@ -214,6 +269,7 @@ bool Remover::try_face(uint32_t f, bool full) {
   const uint32_t a = t[0], b = t[1], c = t[2];
   const double *pa = front_.point(a), *pb = front_.point(b), *pc = front_.point(c);
   const PlaneSide base_side(pa, pb, pc);
+  const BaseSpheres spheres(pa, pb, pc);
   targets_.clear();
   find_closers(f);
   for (size_t leaf : leaves_)
@@ -230,7 +286,7 @@ bool Remover::try_face(uint32_t f, bool full) {
       double shape = shape_measure(pa, pb, pc, q);
       if (closed == 3 && options_.close_flat_cavities) shape = std::max(shape, std::numeric_limits<double>::min());
       if (shape < options_.min_quality) continue;
-      targets_.push_back({shape * (1 + closed), v});
+      targets_.push_back({kClosingWeight * closed + kShapeWeight * shape - spheres.height(q), v});
     }
   std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {
     return x.score != y.score ? x.score > y.score : x.vertex < y.vertex;

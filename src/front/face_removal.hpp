@@ -9,15 +9,27 @@
 //    never communicate: it waits for a repartitioning);
 //  - targets: the front vertices of those leaves that lie in the box with
 //    orient3d(a, b, c, p) > 0;
-//  - order: by score = q × (1 + closed) descending, then vertex index, where
-//    q = √2 det / l_rms³ (6 × volume over the cube of the root mean square
-//    edge, 1 for the regular tet) and `closed` counts the tet's other faces
-//    whose twins are alive (it closes them): closing the front is preferred
-//    unless the shape is much worse. Targets with q < min_quality are
-//    dropped; with close_flat_cavities, a tet that closes the base's three
-//    neighbours across its edges (it fills a closed cavity of four faces,
-//    which no other vertex can) stays even when q, measured in doubles, is
-//    0 or below, the last target;
+//  - order: the Delaunay order of gift wrapping. The spheres through a, b
+//    and c have their centres on the line through the base's circumcentre
+//    along its normal; a target's sphere is the one through it, and its
+//    height is that centre's height over the circumcentre, in base
+//    circumradii. Lowest first: the first target is the one the sphere
+//    meets first as it sweeps from the base's plane to the normal's side,
+//    so no other target lies inside its sphere, and the first valid one is
+//    the constrained Delaunay choice among the valid ones. Near-ties
+//    (co-spherical targets: regular grids, symmetric small bodies) go to
+//    closing and shape: score = 0.05 closed + 0.01 q - height, descending,
+//    then vertex index, where `closed` counts the tet's other faces whose
+//    twins are alive (it closes them) and q = √2 det / l_rms³ (6 × volume
+//    over the cube of the root mean square edge, 1 for the regular tet).
+//    Tets made in this order agree with each other where a best-shape
+//    order leaves gaps no vertex can fill: on the corpus a quarter fewer
+//    faces reach the tree-less removals' pockets, and the run is a fifth
+//    faster (docs/decisions.md, "Targets in Delaunay order"). Targets with
+//    q < min_quality are dropped; with close_flat_cavities, a tet that
+//    closes the base's three neighbours across its edges (it fills a
+//    closed cavity of four faces, which no other vertex can) stays even
+//    when q, measured in doubles, is 0 or below;
 //  - the first target passing check_removal (removal_checks.hpp) makes the
 //    tet (a, b, c, p) (positively oriented), appended to `out`; the front
 //    is updated and boundary or too-close leaves whose front became empty
