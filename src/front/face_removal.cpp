@@ -286,7 +286,9 @@ bool Remover::try_face(uint32_t f, bool full) {
       double shape = shape_measure(pa, pb, pc, q);
       if (closed == 3 && options_.close_flat_cavities) shape = std::max(shape, std::numeric_limits<double>::min());
       if (shape < options_.min_quality) continue;
-      targets_.push_back({kClosingWeight * closed + kShapeWeight * shape - spheres.height(q), v});
+      const double score = options_.shape_order ? shape * (1 + closed)
+                                                : kClosingWeight * closed + kShapeWeight * shape - spheres.height(q);
+      targets_.push_back({score, v});
     }
   std::sort(targets_.begin(), targets_.end(), [](const Target& x, const Target& y) {
     return x.score != y.score ? x.score > y.score : x.vertex < y.vertex;

@@ -29,7 +29,9 @@
 //    q < min_quality are dropped; with close_flat_cavities, a tet that
 //    closes the base's three neighbours across its edges (it fills a
 //    closed cavity of four faces, which no other vertex can) stays even
-//    when q, measured in doubles, is 0 or below;
+//    when q, measured in doubles, is 0 or below. With shape_order the
+//    score is q × (1 + closed) instead (closing preferred unless the shape
+//    is much worse): the paper's order, run_mesh's last resort;
 //  - the first target passing check_removal (removal_checks.hpp) makes the
 //    tet (a, b, c, p) (positively oriented), appended to `out`; the front
 //    is updated and boundary or too-close leaves whose front became empty
@@ -86,6 +88,11 @@ struct RemovalOptions {
   // pass it turns the CAD parts' flat cavities into tets the tree-less
   // rounds then grow around (pinion r2 31 -> 57 s, t13 r2 14 -> 34 s).
   bool close_flat_cavities = false;
+  // Targets best shape first (score q × (1 + closed), the paper's order)
+  // instead of in Delaunay order: run_mesh's last attempt, for a front the
+  // Delaunay order's attempts could not close (stress-check seed 673 closes
+  // this way only).
+  bool shape_order = false;
   // Tree-less removals only: rounds in a row without a smaller front before
   // they give up (treeless_removal.hpp; the corpus closes in at most 25
   // rounds; t13 r2 closes in 132, with new smallest fronts more than 32

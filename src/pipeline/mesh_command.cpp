@@ -373,6 +373,7 @@ enum class TreeAttempt {
   kFirst,           // the tree refined for a thin core, if refined: short growth and the default only
   kFirstTree,       // the first tree, every strategy
   kRefinedRescues,  // the refined tree again, the rescue strategies only
+  kShapeOrder,      // the first tree, targets best shape first, every strategy
 };
 
 // Thrown on every rank when the front did not close on a tree that
@@ -381,6 +382,9 @@ struct ThinCoreRetry {};
 // Thrown on every rank when it did not close on the first tree either:
 // run_mesh tries the refined tree's rescue strategies.
 struct RefinedRescueRetry {};
+// Thrown on every rank when the attempts with targets in Delaunay order
+// all left faces: run_mesh tries the first tree with the shape order.
+struct ShapeOrderRetry {};
 
 int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, TreeAttempt attempt) {
   RunReport report(comm, log);
@@ -388,6 +392,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
   report.set("options", options_json(options));
   if (attempt == TreeAttempt::kFirstTree) report.set("retried without the thin-core refinement", true);
   if (attempt == TreeAttempt::kRefinedRescues) report.set("retried with the rescue strategies on the refined tree", true);
+  if (attempt == TreeAttempt::kShapeOrder) report.set("retried with targets best shape first", true);
   int code = kExitOk;
   std::string message;
   MeshState s;
@@ -543,7 +548,8 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
         if (!s.whole) return ojson::object();
         s.mesh = std::move(s.core.mesh);
         const RankLeaves ranks{&s.boundary.front.leaves, &s.boundary.separators};
-        return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo);
+        return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo,
+                                 attempt == TreeAttempt::kShapeOrder);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         // On a refined tree, the rescues wait for the first tree (every
@@ -556,6 +562,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
           treeless_options.rerun_best = false;  // a failure here is discarded (ThinCoreRetry)
         }
         treeless_options.rescues_only = attempt == TreeAttempt::kRefinedRescues;
+        treeless_options.shape_order = attempt == TreeAttempt::kShapeOrder;
         report.run_step("face removals (tree-less)", [&] {
           return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note,
                                options.treeless_on_ranks, treeless_options);
@@ -565,6 +572,9 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
       if (faces_left > 0 && s.thin_core_refined && attempt == TreeAttempt::kFirst) throw ThinCoreRetry{};
       if (faces_left > 0 && attempt == TreeAttempt::kFirstTree && options.treeless) throw RefinedRescueRetry{};
+      const bool last_in_delaunay_order = attempt == TreeAttempt::kRefinedRescues ||
+                                          (attempt == TreeAttempt::kFirst && !s.thin_core_refined);
+      if (faces_left > 0 && last_in_delaunay_order && options.treeless) throw ShapeOrderRetry{};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
@@ -632,14 +642,12 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
   return code;
 }
 
-}  // namespace
-
 // Closure comes first: the thin-core refinement is for quality, and the
 // first tree is what meshed before it, so a front that does not close on
 // the refined tree with short growth or the default strategy is meshed
 // again on the first one, with every strategy; when that fails too, the
 // refined tree's rescue strategies have their turn.
-int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
+int attempts_in_delaunay_order(const MeshOptions& options, const Comm& comm, const Log& log) {
   try {
     return mesh_once(options, comm, log, TreeAttempt::kFirst);
   } catch (const ThinCoreRetry&) {
@@ -655,6 +663,26 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
              ": the front did not close on the first tree either: the rescue strategies on the refined tree");
   }
   return mesh_once(options, comm, log, TreeAttempt::kRefinedRescues);
+}
+
+}  // namespace
+
+// The face removals take targets in Delaunay order (face_removal.hpp); when
+// no attempt closes the front that way, the first tree is meshed once more
+// with targets best shape first, every strategy: the orders leave
+// different pockets, and where the Delaunay order's cannot be closed the
+// shape order's may be (stress-check seed 673).
+int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
+  try {
+    return attempts_in_delaunay_order(options, comm, log);
+  } catch (const ShapeOrderRetry&) {
+    log.note(file_basename(options.input) +
+             ": the front did not close with targets in Delaunay order: meshing again on the first tree with targets "
+             "best shape first");
+  }
+  MeshOptions first = options;
+  first.min_core = 0;
+  return mesh_once(first, comm, log, TreeAttempt::kShapeOrder);
 }
 
 }  // namespace partet

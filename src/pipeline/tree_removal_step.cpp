@@ -20,9 +20,10 @@ namespace {
 // One pass of the tree-supported removals taking targets of quality at
 // least `quality`, from `seeds` (every alive face when null).
 RemovalCounts one_pass(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank, double quality,
-                       RemovalMemo& memo, const std::vector<uint32_t>* seeds) {
+                       bool shape_order, RemovalMemo& memo, const std::vector<uint32_t>* seeds) {
   RemovalOptions options;
   options.rank = rank;
+  options.shape_order = shape_order;
   options.min_quality = quality;
   return remove_faces_tree_supported(front, tree, root, mesh, options, seeds, &memo);
 }
@@ -39,11 +40,11 @@ void add_work(RemovalCounts& into, const RemovalCounts& x) {
 // The shaped pass (with `shaped_memo`), then the plain one (with `memo`),
 // over every alive face; their counts summed.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
-                         RemovalMemo& shaped_memo, RemovalMemo& memo) {
+                         bool shape_order, RemovalMemo& shaped_memo, RemovalMemo& memo) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
-  const RemovalCounts first = one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shaped_memo, nullptr);
-  RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, memo, nullptr);
+  const RemovalCounts first = one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shape_order, shaped_memo, nullptr);
+  RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, shape_order, memo, nullptr);
   add_work(n, first);
   return n;
 }
@@ -100,7 +101,8 @@ void take_failures(const std::string& image, size_t& pos, const Front& front, Re
 }  // namespace
 
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
-                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo) {
+                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
+                        bool shape_order) {
   const bool root_rank = comm.rank() == 0;
   const bool distributed = comm.size() > 1;
   ojson c;
@@ -128,7 +130,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
         const Front::Snapshot start = front->snapshot();
         Stopwatch clock;
         const RemovalCounts mine =
-            one_pass(*front, tree, root, mesh, comm.rank(), quality, m, round == 0 ? nullptr : &seeds);
+            one_pass(*front, tree, root, mesh, comm.rank(), quality, shape_order, m, round == 0 ? nullptr : &seeds);
         rank_s += clock.wall();
         add_work(ranks_work, mine);
         if (shaped && round == 0) {
@@ -158,7 +160,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
       std::fill(tree.owner.begin(), tree.owner.end(), 0);
       const Front::Snapshot start = front->snapshot();
       Stopwatch clock;
-      if (root_rank) add_work(n, one_pass(*front, tree, root, mesh, 0, quality, m, &seeds));
+      if (root_rank) add_work(n, one_pass(*front, tree, root, mesh, 0, quality, shape_order, m, &seeds));
       after_s += clock.wall();
       merge_others(comm, comm.all_gather(changes_image(root_rank ? front->changes_since(start) : Front::Changes{})),
                    *front, tree);
@@ -195,7 +197,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     }
     n.faces_left = front->num_alive_faces();
   } else {
-    n = two_passes(*front, tree, root, mesh, 0, shaped_memo, memo);
+    n = two_passes(*front, tree, root, mesh, 0, shape_order, shaped_memo, memo);
   }
   // Gap vertices no tet took are dropped: the tree-less removals place
   // their own where a cavity needs one, and a free vertex inside a cavity

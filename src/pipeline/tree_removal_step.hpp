@@ -64,8 +64,10 @@ struct RankLeaves {
 // front's vertex numbering) are whole on every rank that takes part (on one
 // rank, on it). On return `front` is rank 0's front (null elsewhere),
 // `mesh` rank 0's tets (empty elsewhere) and `memo` what rank 0's passes
-// learnt. `ranks` is ignored on one rank.
+// learnt. `ranks` is ignored on one rank. `shape_order`: targets best
+// shape first (RemovalOptions::shape_order).
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
-                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo);
+                        TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
+                        bool shape_order);
 
 }  // namespace partet

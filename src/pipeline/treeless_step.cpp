@@ -247,6 +247,7 @@ ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree&
     RemovalOptions mine_options;
     mine_options.rank = comm.rank();
     mine_options.stall_rounds = kRankStallRounds;
+    mine_options.shape_order = options.shape_order;
     Stopwatch clock;
     const TreelessCounts mine =
         run_treeless_rounds(*front, tree, root, mesh, mine_options, memo, TreelessStrategy::kDefault);
