@@ -23,7 +23,7 @@
 //    twins are alive (it closes them) and q = √2 det / l_rms³ (6 × volume
 //    over the cube of the root mean square edge, 1 for the regular tet).
 //    Tets made in this order agree with each other where a best-shape
-//    order leaves gaps no vertex can fill: on the corpus a quarter fewer
+//    order leaves gaps no vertex can fill: on the corpus two fifths fewer
 //    faces reach the tree-less removals' pockets, and the run is a fifth
 //    faster (docs/decisions.md, "Targets in Delaunay order"). Targets with
 //    q < min_quality are dropped; with close_flat_cavities, a tet that
