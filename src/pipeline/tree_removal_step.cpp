@@ -18,7 +18,9 @@ namespace partet {
 namespace {
 
 // One pass of the tree-supported removals taking targets of quality at
-// least `quality`, from `seeds` (every alive face when null).
+// least `quality`, in Delaunay order or, with `shape_order`, best shape
+// first (RemovalOptions::shape_order), from `seeds` (every alive face when
+// null).
 RemovalCounts one_pass(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank, double quality,
                        bool shape_order, RemovalMemo& memo, const std::vector<uint32_t>* seeds) {
   RemovalOptions options;
@@ -43,7 +45,8 @@ RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root,
                          bool shape_order, RemovalMemo& shaped_memo, RemovalMemo& memo) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
-  const RemovalCounts first = one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shape_order, shaped_memo, nullptr);
+  const RemovalCounts first =
+      one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shape_order, shaped_memo, nullptr);
   RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, shape_order, memo, nullptr);
   add_work(n, first);
   return n;
