@@ -72,6 +72,11 @@ bool finite_point(const double* p) {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
+// Share of tets under 10 degrees, as the fraction under / tets.
+bool share_no_higher(const QualityStats& x, const QualityStats& y) {
+  return x.dihedral_under_10 * y.tets <= y.dihedral_under_10 * x.tets;
+}
+
 }  // namespace
 
 double tet_radius_ratio(const double* p0, const double* p1, const double* p2, const double* p3) {
@@ -187,6 +192,15 @@ void to_json(nlohmann::json& j, const QualityStats& q) {
                      {"edge_ratio_max", number(q.edge_ratio_max)},
                      {"edge_ratio_mean", number(q.edge_ratio_mean)},
                      {"volume", number(q.volume)}};
+}
+
+bool better_quality(const QualityStats& x, const QualityStats& y) {
+  if (x.tets == 0 || y.tets == 0) return false;
+  const bool no_worse = x.min_dihedral_deg >= y.min_dihedral_deg && share_no_higher(x, y) &&
+                        x.radius_ratio_mean >= y.radius_ratio_mean;
+  const bool gains = x.min_dihedral_deg > y.min_dihedral_deg || !share_no_higher(y, x) ||
+                     x.radius_ratio_mean > y.radius_ratio_mean;
+  return no_worse && gains;
 }
 
 }  // namespace partet

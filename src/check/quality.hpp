@@ -49,6 +49,11 @@ double tet_radius_ratio(const double* p0, const double* p1, const double* p2, co
 
 QualityStats measure_quality(const TetMesh& mesh);
 
+// x is at least as good as y in the three measures the optimizer serves
+// (smallest dihedral angle, share of tets under 10 degrees, mean radius
+// ratio) and better in one; false when either measured no tet.
+bool better_quality(const QualityStats& x, const QualityStats& y);
+
 // Non-finite values (an infinite edge ratio) are written as null.
 void to_json(nlohmann::json& j, const QualityStats& q);
 

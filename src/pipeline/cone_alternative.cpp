@@ -9,24 +9,6 @@
 #include "core/predicates.hpp"
 
 namespace partet {
-namespace {
-
-// Share of tets under 10 degrees, as the fraction under / tets.
-bool share_no_higher(const QualityStats& x, const QualityStats& y) {
-  return x.dihedral_under_10 * y.tets <= y.dihedral_under_10 * x.tets;
-}
-
-// x is at least as good as y in all three measures and better in one.
-bool better(const QualityStats& x, const QualityStats& y) {
-  if (x.tets == 0 || y.tets == 0) return false;
-  const bool no_worse = x.min_dihedral_deg >= y.min_dihedral_deg && share_no_higher(x, y) &&
-                        x.radius_ratio_mean >= y.radius_ratio_mean;
-  const bool gains = x.min_dihedral_deg > y.min_dihedral_deg || !share_no_higher(y, x) ||
-                     x.radius_ratio_mean > y.radius_ratio_mean;
-  return no_worse && gains;
-}
-
-}  // namespace
 
 bool cone_mesh(const TetMesh& mesh, TetMesh& cone) {
   const size_t n = mesh.num_triangles();
@@ -71,7 +53,7 @@ nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& q
   const OptimizeStats stats = optimize_mesh(cone, options);
   if (stats.vertices_collapsed + stats.vertices_removed > 0) drop_unused_vertices(cone);
   const QualityStats& q = stats.after;
-  const bool kept = better(q, quality);
+  const bool kept = better_quality(q, quality);
   c["star-shaped"] = true;
   c["tets"] = cone.num_tets();
   c["min dihedral"] = q.min_dihedral_deg;
