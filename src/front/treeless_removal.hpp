@@ -13,7 +13,9 @@
 // call has stalled: a front that diverges, as on thin walls of long skinny
 // triangles without a templated core, would otherwise churn for hundreds
 // of rounds until a budget runs out). A round splits the alive faces into
-// components (faces sharing an edge) and, for each component of at most
+// components (faces sharing an edge; where more than two share one, the
+// faces across each unmeshed wedge around it: front_cavities.hpp) and,
+// for each component of at most
 // kMaxCavityFaces faces in order of its lowest face index:
 //  1. star fill: q = the deepest point of the component's kernel
 //     (kernel_point.hpp; the mean of the face centroids and the mean of the

@@ -6,13 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numeric>
 #include <utility>
 #include <vector>
 
 #include "core/distance.hpp"
 #include "core/error.hpp"
 #include "core/predicates.hpp"
+#include "front/front_cavities.hpp"
 #include "front/kernel_point.hpp"
 #include "front/removal_checks.hpp"
 #include "front/tet_incidence.hpp"
@@ -99,12 +99,9 @@ class TreelessRemover {
   // again (appended to `out`) from one of its faces the deletion opened,
   // so the front is as before the deletions.
   void restore_reopened();
-  // Alive faces grouped by edge-connected component: components_ holds the
-  // faces, component_first_ the start of each (plus one past the end).
-  void find_components();
   // The component holding alive face f, in face index order, found by a
-  // breadth-first walk across edges (Front::for_each_face_on_edge); the
-  // walk stops past `limit` faces.
+  // breadth-first walk across edges (as faces_across_edge crosses them);
+  // the walk stops past `limit` faces.
   std::vector<uint32_t> component_of(uint32_t f, size_t limit);
   // A new walk over the face slots: walk_ marks none of them yet.
   void start_walk();
@@ -561,42 +558,6 @@ bool TreelessRemover::advance_face(uint32_t f) {
   return false;
 }
 
-void TreelessRemover::find_components() {
-  std::vector<std::pair<uint64_t, uint32_t>> edge_face;
-  std::vector<uint32_t> parent(front_.num_face_slots());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (uint32_t f = 0; f < front_.num_face_slots(); ++f) {
-    if (!front_.alive(f)) continue;
-    const uint32_t* t = front_.face(f);
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t x = std::min(t[i], t[(i + 1) % 3]), y = std::max(t[i], t[(i + 1) % 3]);
-      edge_face.emplace_back((uint64_t{x} << 32) | y, f);
-    }
-  }
-  std::sort(edge_face.begin(), edge_face.end());
-  for (size_t i = 1; i < edge_face.size(); ++i)
-    if (edge_face[i].first == edge_face[i - 1].first) {
-      const uint32_t x = find(edge_face[i].second), y = find(edge_face[i - 1].second);
-      parent[std::max(x, y)] = std::min(x, y);  // the root is the lowest face index
-    }
-  // Faces by (root, index): components in order of their lowest face.
-  std::vector<std::pair<uint32_t, uint32_t>> by_root;
-  for (uint32_t f = 0; f < front_.num_face_slots(); ++f)
-    if (front_.alive(f)) by_root.emplace_back(find(f), f);
-  std::sort(by_root.begin(), by_root.end());
-  components_.clear();
-  component_first_.clear();
-  for (size_t i = 0; i < by_root.size(); ++i) {
-    if (i == 0 || by_root[i].first != by_root[i - 1].first) component_first_.push_back(i);
-    components_.push_back(by_root[i].second);
-  }
-  component_first_.push_back(components_.size());
-}
-
 void TreelessRemover::start_walk() {
   if (walk_mark_.size() < front_.num_face_slots()) walk_mark_.resize(front_.num_face_slots(), 0);
   if (++walk_ == 0) {
@@ -607,16 +568,19 @@ void TreelessRemover::start_walk() {
 
 std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
   start_walk();
-  std::vector<uint32_t> faces = {f};
+  std::vector<uint32_t> faces = {f}, on_edge;
   walk_mark_[f] = walk_;
   for (size_t head = 0; head < faces.size() && faces.size() <= limit; ++head) {
     const uint32_t* t = front_.face(faces[head]);
     for (int k = 0; k < 3; ++k) {
-      front_.for_each_face_on_edge(t[k], t[(k + 1) % 3], [&](uint32_t g) {
-        if (walk_mark_[g] == walk_) return;
+      on_edge.clear();
+      front_.for_each_face_on_edge(t[k], t[(k + 1) % 3], [&](uint32_t g) { on_edge.push_back(g); });
+      faces_across_edge(front_, faces[head], t[k], t[(k + 1) % 3], on_edge);
+      for (uint32_t g : on_edge) {
+        if (walk_mark_[g] == walk_) continue;
         walk_mark_[g] = walk_;
         faces.push_back(g);
-      });
+      }
     }
   }
   std::sort(faces.begin(), faces.end());
@@ -640,7 +604,7 @@ TreelessCounts TreelessRemover::run() {
     ++counts_.rounds;
     changed = false;
     const size_t tets_before = out_.num_tets(), deleted_before = counts_.tets_deleted;
-    find_components();
+    front_cavities(front_, components_, component_first_);
     cavities.clear();
     stuck.clear();
     for (size_t i = 0; i + 1 < component_first_.size(); ++i) {

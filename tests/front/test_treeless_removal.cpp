@@ -75,7 +75,7 @@ Meshed mesh_surface(SurfaceMesh surface, const std::string& name, const RemovalO
   Front front(s.initial, s.tree, s.root);
   Meshed r;
   r.out = s.core.mesh;
-  const size_t tree_left = remove_faces_tree_supported(front, s.tree, s.root, r.out).faces_left;
+  const size_t tree_left = remove_faces_tree_supported(front, s.tree, s.root, r.out, options).faces_left;
   const size_t front_vertices = front.num_vertices();
   r.counts = remove_faces_treeless(front, s.tree, s.root, r.out, options);
   r.faces_left = r.counts.faces_left;
@@ -118,6 +118,15 @@ TEST(FrontTreeless, EveryDataSurfaceCloses) {
     EXPECT_EQ(mesh_file(name).faces_left, 0u) << name;
 }
 
+// run_mesh's last attempt: both removal steps with targets best shape
+// first (face_removal.hpp) close the data surfaces too.
+TEST(FrontTreeless, TheShapeOrderClosesToo) {
+  RemovalOptions shape;
+  shape.shape_order = true;
+  for (const char* name : {"good/cross.off", "good/joint.off", "good/lever.stl", "good/part.off", "hard/pinion.off"})
+    EXPECT_EQ(mesh_file(name, shape).faces_left, 0u) << name;
+}
+
 // Refined once, part has flat cavities between exactly coplanar surface
 // triangles and the tets above them: they close only when the tets behind
 // all the cavity's non-surface faces are reopened (they cycled before).
@@ -129,58 +138,55 @@ TEST(FrontTreeless, RefinedSurfacesClose) {
   }
 }
 
-// dragknob refined twice: with stall_rounds 1 and no rescue the
-// short-growth and default attempts both stop after a round without a
-// smaller front (its fronts shrink unevenly, the default closes it in more
-// rounds), stalled, and the call leaves a valid partial mesh, that of the
-// attempt which left fewer faces; sphere966 closes unstalled.
+// joint refined twice, the default strategy alone with stall_rounds 1:
+// it stops after a round without a smaller front, stalled, and the call
+// leaves a valid partial mesh; sphere966 closes unstalled.
 TEST(FrontTreeless, StopsWhenTheFrontStallsAndClosesOtherwise) {
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
   impatient.rescues = 0;
-  const SurfaceMesh dragknob = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/dragknob.off"))));
-  const Meshed stopped = mesh_surface(dragknob, "good/dragknob.off r2", impatient);
+  impatient.short_growth_first = false;
+  const SurfaceMesh joint = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/joint.off"))));
+  const Meshed stopped = mesh_surface(joint, "good/joint.off r2", impatient);
   EXPECT_TRUE(stopped.counts.stalled);
   EXPECT_GT(stopped.faces_left, 0u);
-  const std::vector<size_t>& left = stopped.counts.faces_left_by_attempt;
-  ASSERT_EQ(left.size(), 2u);
-  EXPECT_EQ(stopped.faces_left, *std::min_element(left.begin(), left.end()));
+  EXPECT_EQ(stopped.counts.faces_left_by_attempt, std::vector<size_t>{stopped.faces_left});
+  EXPECT_EQ(stopped.counts.strategy, TreelessStrategy::kDefault);
   const Meshed closed = mesh_file("good/sphere966.off");
   EXPECT_FALSE(closed.counts.stalled);
   EXPECT_EQ(closed.faces_left, 0u);
 }
 
-// dragknob refined twice with stall_rounds 1: the short-growth and default
-// strategies stall; the call restarts from its starting state and the
-// first rescue, kUndoOvergrowth, closes it, into a mesh partet check's
-// validator passes (mesh_surface). The rescues alone make the same
-// attempts and the same mesh. Without short growth first and no rescue:
-// one attempt, the default's.
-TEST(FrontTreeless, RescueClosesWhatTheDefaultLeaves) {
-  const SurfaceMesh dragknob = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/dragknob.off"))));
+// The same with the rescues: each starts again from the call's starting
+// state, none closes joint r2 at stall_rounds 1, and the attempt that left
+// the fewest faces (the earliest on ties) is run again: its mesh, a valid
+// partial one (mesh_surface), is what the call leaves. The rescues alone
+// (what a refined tree gets after the first tree failed too) make the same
+// attempts from the same state. From where dragknob r2's front starts,
+// the first rescue alone closes it.
+TEST(FrontTreeless, RescuesStartAgainAndTheBestAttemptIsKept) {
+  const SurfaceMesh joint = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/joint.off"))));
   RemovalOptions impatient;
   impatient.stall_rounds = 1;
-  const Meshed rescued = mesh_surface(dragknob, "good/dragknob.off r2, stall 1", impatient);
-  EXPECT_EQ(rescued.faces_left, 0u);
-  EXPECT_EQ(rescued.counts.strategy, TreelessStrategy::kUndoOvergrowth);
-  ASSERT_EQ(rescued.counts.faces_left_by_attempt.size(), 3u);
-  for (size_t i = 0; i < 2; ++i) EXPECT_GT(rescued.counts.faces_left_by_attempt[i], 0u);
-
-  // The rescues alone (what a refined tree gets after the first tree
-  // failed too) make the same attempts from the same state.
-  impatient.rescues_only = true;
-  const Meshed rescues = mesh_surface(dragknob, "good/dragknob.off r2, stall 1, rescues only", impatient);
-  impatient.rescues_only = false;
-  EXPECT_EQ(rescues.counts.faces_left_by_attempt,
-            std::vector<size_t>(rescued.counts.faces_left_by_attempt.begin() + 2,
-                                rescued.counts.faces_left_by_attempt.end()));
-  EXPECT_EQ(rescues.out.tets, rescued.out.tets);
-
-  impatient.rescues = 0;
   impatient.short_growth_first = false;
-  const Meshed alone = mesh_surface(dragknob, "good/dragknob.off r2, stall 1, default only", impatient);
-  EXPECT_EQ(alone.counts.faces_left_by_attempt, std::vector<size_t>{alone.faces_left});
-  EXPECT_EQ(alone.counts.strategy, TreelessStrategy::kDefault);
+  const Meshed best = mesh_surface(joint, "good/joint.off r2, stall 1", impatient);
+  const std::vector<size_t>& left = best.counts.faces_left_by_attempt;
+  ASSERT_EQ(left.size(), 4u);
+  for (size_t n : left) EXPECT_GT(n, 0u);
+  const auto fewest = std::min_element(left.begin(), left.end());
+  EXPECT_EQ(best.faces_left, *fewest);
+  EXPECT_EQ(best.counts.strategy, fewest == left.begin() ? TreelessStrategy::kDefault
+                                                          : kRescueStrategies[fewest - left.begin() - 1]);
+
+  impatient.rescues_only = true;
+  const Meshed rescues = mesh_surface(joint, "good/joint.off r2, stall 1, rescues only", impatient);
+  EXPECT_EQ(rescues.counts.faces_left_by_attempt, std::vector<size_t>(left.begin() + 1, left.end()));
+
+  impatient.rescues = 1;
+  const SurfaceMesh dragknob = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/dragknob.off"))));
+  const Meshed undone = mesh_surface(dragknob, "good/dragknob.off r2, stall 1, undo overgrowth", impatient);
+  EXPECT_EQ(undone.faces_left, 0u);
+  EXPECT_EQ(undone.counts.strategy, TreelessStrategy::kUndoOvergrowth);
 }
 
 // spool refined once: the short-growth attempt closes it (its fills split
@@ -310,6 +316,7 @@ TEST(CompactMesh, DropsUnusedVerticesAndRenumbers) {
   EXPECT_EQ(m.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}));
   EXPECT_EQ(drop_unused_vertices(m), 0u);
 }
+
 
 }  // namespace
 }  // namespace partet::test
