@@ -252,7 +252,7 @@ TEST(OptimizeCli, ReportsTheStepAndHonoursNoOptimize) {
   EXPECT_EQ(run_partet(surface + " -o " + dir + "/x.vtu --optimize -1").exit_code, 2);
 }
 
-// The unoptimized mesh of `name` optimized with the default options (`with`,
+// The unoptimized mesh of a surface optimized with the default options (`with`,
 // stats `on`) and with `disable` applied to them (stats `off`).
 struct Comparison {
   TetMesh original, with;
@@ -260,12 +260,12 @@ struct Comparison {
 };
 
 // optimize_mesh with `base` options against the same with `disable` on top,
-// on the mesh partet makes with `extra` options.
+// on the mesh partet makes of the surface at `path` with `extra` options.
 template <class Disable>
-Comparison compare_options(const char* name, Disable disable, const OptimizeOptions& base = {},
-                           const std::string& extra = "") {
+Comparison compare_options_at(const std::string& path, Disable disable, const OptimizeOptions& base = {},
+                              const std::string& extra = "") {
   Comparison c;
-  c.original = unoptimized(name, extra);
+  c.original = unoptimized_at(path, extra);
   c.with = c.original;
   TetMesh without = c.original;
   c.on = optimize_mesh(c.with, base);
@@ -273,6 +273,13 @@ Comparison compare_options(const char* name, Disable disable, const OptimizeOpti
   disable(options);
   c.off = optimize_mesh(without, options);
   return c;
+}
+
+// The same on the data surface `name`.
+template <class Disable>
+Comparison compare_options(const char* name, Disable disable, const OptimizeOptions& base = {},
+                           const std::string& extra = "") {
+  return compare_options_at(data_path(name), disable, base, extra);
 }
 
 // lever: the removals leave flat tets (0 degrees in doubles) between
@@ -360,16 +367,12 @@ TEST(OptimizeMesh, GrownCavitiesLiftTheSmallestAngle) {
   const std::string eight = scratch_dir("optimize_grown") + "/eight-r1.off";
   std::ofstream(eight) << format_off(refine_midpoints(read_surface_file(data_path("good/eight.off"))));
   for (const std::string& path : {data_path("good/cross.off"), eight}) {
-    const TetMesh original = unoptimized_at(path, "--no-gap-vertices");
-    TetMesh with = original, without = original;
-    const OptimizeStats on = optimize_mesh(with, OptimizeOptions{});
-    OptimizeOptions fixed_cavities;
-    fixed_cavities.grow_cavities = false;
-    const OptimizeStats off = optimize_mesh(without, fixed_cavities);
-    EXPECT_GT(on.after.min_dihedral_deg, off.after.min_dihedral_deg + 0.5) << path;
-    EXPECT_LE(on.after.dihedral_under_10, off.after.dihedral_under_10) << path;
-    EXPECT_TRUE(validate_mesh(with, nullptr).valid) << path;
-    EXPECT_EQ(boundary_faces(with), boundary_faces(original)) << path;
+    const Comparison c =
+        compare_options_at(path, [](OptimizeOptions& o) { o.grow_cavities = false; }, {}, "--no-gap-vertices");
+    EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 0.5) << path;
+    EXPECT_LE(c.on.after.dihedral_under_10, c.off.after.dihedral_under_10) << path;
+    EXPECT_TRUE(validate_mesh(c.with, nullptr).valid) << path;
+    EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original)) << path;
   }
 }
 
@@ -385,17 +388,12 @@ TEST(OptimizeMesh, GrownCavitiesLiftTheSmallestAngle) {
 TEST(OptimizeMesh, VerticesNearCapCornersLiftTheSmallestAngle) {
   const std::string refined = scratch_dir("optimize_caps") + "/u-r1.off";
   std::ofstream(refined) << format_off(refine_midpoints(read_surface_file(data_path("good/u.off"))));
-  const TetMesh original = unoptimized_at(refined, "");
-  TetMesh with = original, without = original;
-  const OptimizeStats on = optimize_mesh(with, OptimizeOptions{});
-  OptimizeOptions no_corners;
-  no_corners.corner_vertices = false;
-  const OptimizeStats off = optimize_mesh(without, no_corners);
-  EXPECT_LT(off.after.min_dihedral_deg, 0.068);
-  EXPECT_GT(on.after.min_dihedral_deg, 0.12);
-  EXPECT_LT(static_cast<double>(on.after.dihedral_under_10) / on.after.tets, 0.1);
-  EXPECT_TRUE(validate_mesh(with, nullptr).valid);
-  EXPECT_EQ(boundary_faces(with), boundary_faces(original));
+  const Comparison c = compare_options_at(refined, [](OptimizeOptions& o) { o.corner_vertices = false; });
+  EXPECT_LT(c.off.after.min_dihedral_deg, 0.068);
+  EXPECT_GT(c.on.after.min_dihedral_deg, 0.12);
+  EXPECT_LT(static_cast<double>(c.on.after.dihedral_under_10) / c.on.after.tets, 0.1);
+  EXPECT_TRUE(validate_mesh(c.with, nullptr).valid);
+  EXPECT_EQ(boundary_faces(c.with), boundary_faces(c.original));
 }
 
 // Vertex collapse (collapse.hpp) frees interior vertices the removals left
