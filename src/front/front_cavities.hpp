@@ -1,14 +1,14 @@
-// The front's cavities: its alive faces grouped across their edges, and
-// where more than two faces share an edge, paired across the unmeshed
-// wedges between them. Where more than two front faces share an edge (two cavities pinched
-// along it, as a thin plate's slab leaves between its top and bottom
-// surface vertices), the cavities are the wedges of unmeshed space around
-// the edge: each face bounds the wedge on its unmeshed side (where
+// The front's cavities: its alive faces grouped across their edges. Where
+// more than two front faces share an edge (two cavities pinched along it,
+// as a thin plate's slab leaves between its top and bottom surface
+// vertices), the cavities are the wedges of unmeshed space around the
+// edge: each face bounds the wedge on its unmeshed side (where
 // orient3d(face, p) > 0), which ends at the next face around the edge in
-// that direction. The tree-less removals split their components there
-// instead of taking every face on the edge as one cavity: stress-check
-// seed 673's 260 faces left were a chain of such cavities, pinched along
-// 95 edges, that no star point could fill together.
+// that direction, so the faces there are paired across those wedges. The
+// tree-less removals split their components that way instead of taking
+// every face on the edge as one cavity: stress-check seed 673's 260 faces
+// left were a chain of such cavities, pinched along 95 edges, that no
+// star point could fill together.
 //
 // Exact: the faces are sorted around the edge by orient3d signs alone.
 #pragma once

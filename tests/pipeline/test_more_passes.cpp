@@ -22,10 +22,11 @@ nlohmann::json step(const nlohmann::json& report, const std::string& name) {
 }
 
 nlohmann::json mesh_report(const std::string& in, const std::string& dir, const std::string& name) {
-  const auto r = test::run_partet(in + " -o " + dir + "/" + name + ".vtu --quiet --report " + dir + "/" + name + ".json");
+  const std::string base = dir + "/" + name;
+  const auto r = test::run_partet(in + " -o " + base + ".vtu --quiet --report " + base + ".json");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_EQ(test::run_partet("check " + dir + "/" + name + ".vtu --surface " + in).exit_code, 0);
-  return nlohmann::json::parse(test::read_text(dir + "/" + name + ".json"));
+  EXPECT_EQ(test::run_partet("check " + base + ".vtu --surface " + in).exit_code, 0);
+  return nlohmann::json::parse(test::read_text(base + ".json"));
 }
 
 TEST(MorePasses, BetterQualityIsNoWorseInAnyMeasureAndBetterInOne) {
