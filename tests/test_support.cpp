@@ -48,6 +48,12 @@ RunResult run_partet(const std::string& args) {
   return r;
 }
 
+nlohmann::json report_step(const nlohmann::json& report, const std::string& name) {
+  for (const auto& step : report["steps"])
+    if (step["name"] == name) return step;
+  return nullptr;
+}
+
 SurfaceMesh flat_tet_of_seed_1790() {
   SurfaceMesh s;
   s.xyz = {-0.24090284901187772, -0.15037344580850626, 0.17218002581386063,

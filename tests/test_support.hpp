@@ -2,6 +2,7 @@
 // the partet binary, and small generated shapes.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct RunResult {
 };
 // Runs the partet binary with `args` (a shell-quoted string).
 RunResult run_partet(const std::string& args);
+// The step `name` of a run report (--report), or null.
+nlohmann::json report_step(const nlohmann::json& report, const std::string& name);
 
 // An axis-aligned box [0,a]x[0,b]x[0,c] as 12 outward triangles; vertex i
 // is (a if i&1, b if i&2, c if i&4).

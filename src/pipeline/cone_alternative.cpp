@@ -7,6 +7,7 @@
 #include "core/compact_mesh.hpp"
 #include "core/kernel_point.hpp"
 #include "core/predicates.hpp"
+#include "pipeline/mesh_alternative.hpp"
 
 namespace partet {
 
@@ -42,7 +43,7 @@ bool cone_mesh(const TetMesh& mesh, TetMesh& cone) {
   return true;
 }
 
-nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& quality,
+nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, QualityStats& quality,
                                             const OptimizeOptions& options) {
   nlohmann::ordered_json c;
   TetMesh cone;
@@ -50,17 +51,8 @@ nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& q
     c["star-shaped"] = false;
     return c;
   }
-  const OptimizeStats stats = optimize_mesh(cone, options);
-  if (stats.vertices_collapsed + stats.vertices_removed > 0) drop_unused_vertices(cone);
-  const QualityStats& q = stats.after;
-  const bool kept = better_quality(q, quality);
   c["star-shaped"] = true;
-  c["tets"] = cone.num_tets();
-  c["min dihedral"] = q.min_dihedral_deg;
-  c["% under 10 deg"] = 100.0 * static_cast<double>(q.dihedral_under_10) / static_cast<double>(q.tets);
-  c["mean radius ratio"] = q.radius_ratio_mean;
-  c["kept"] = kept;
-  if (kept) mesh = std::move(cone);
+  c.update(keep_better_alternative(mesh, std::move(cone), quality, options));
   return c;
 }
 

@@ -35,11 +35,11 @@ bool cone_mesh(const TetMesh& mesh, TetMesh& cone);
 
 // When mesh.tris has at most kConeTriangles triangles and a cone: the cone,
 // optimized with `options`, replaces `mesh` (whose quality is `quality`, as
-// optimize_mesh measured it) when it is at least as good in smallest
-// dihedral angle, share of tets under 10 degrees and mean radius ratio, and
-// better in one (the three measures the optimizer serves). Returns what was
-// tried, for the run report.
-nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, const QualityStats& quality,
+// optimize_mesh measured it; updated when replaced) when it is at least as
+// good in smallest dihedral angle, share of tets under 10 degrees and mean
+// radius ratio, and better in one (keep_better_alternative). Returns what
+// was tried, for the run report.
+nlohmann::ordered_json try_cone_alternative(TetMesh& mesh, QualityStats& quality,
                                             const OptimizeOptions& options);
 
 }  // namespace partet

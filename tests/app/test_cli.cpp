@@ -12,6 +12,7 @@ namespace partet {
 namespace {
 
 using test::data_path;
+using test::report_step;
 using test::run_partet;
 using test::scratch_dir;
 
@@ -176,13 +177,6 @@ TEST(Cli, ReportHasStepsTimesPerRankAndMemory) {
   EXPECT_GT(j["steps"][1]["counts"]["triangles"].get<int>(), 0);
   EXPECT_EQ(j["surface"]["shells"], 1);
   EXPECT_GT(j["peak_rss_mib"][0].get<double>(), 0.0);
-}
-
-// The step `name` of a report, or null.
-nlohmann::json report_step(const nlohmann::json& report, const std::string& name) {
-  for (const auto& step : report["steps"])
-    if (step["name"] == name) return step;
-  return nullptr;
 }
 
 TEST(Cli, ThinBodyGetsAFinerCore) {

@@ -16,6 +16,8 @@
 namespace partet {
 namespace {
 
+using test::report_step;
+
 TetMesh surface_only(const SurfaceMesh& s) {
   TetMesh m;
   m.xyz = s.xyz;
@@ -50,18 +52,13 @@ TEST(ConeAlternative, KeptOnlyWhenNoWorseInAnyMeasure) {
   TetMesh mesh = test::cube_tets();
   const TetMesh before = mesh;
   OptimizeOptions options;
-  nlohmann::ordered_json c = try_cone_alternative(mesh, measure_quality(mesh), options);
+  QualityStats quality = measure_quality(mesh);
+  nlohmann::ordered_json c = try_cone_alternative(mesh, quality, options);
   EXPECT_TRUE(c["star-shaped"].get<bool>());
   EXPECT_FALSE(c["kept"].get<bool>());
   EXPECT_DOUBLE_EQ(c["min dihedral"].get<double>(), 45.0);
   EXPECT_EQ(mesh.tets, before.tets);
   EXPECT_EQ(mesh.xyz, before.xyz);
-}
-
-nlohmann::json step(const nlohmann::json& report, const std::string& name) {
-  for (const auto& s : report["steps"])
-    if (s["name"] == name) return s;
-  return nullptr;
 }
 
 TEST(ConeAlternative, TheRefinedIcosahedronGetsItsConeAndTheCrossItsFrontMesh) {
@@ -72,20 +69,20 @@ TEST(ConeAlternative, TheRefinedIcosahedronGetsItsConeAndTheCrossItsFrontMesh) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(test::run_partet("check " + dir + "/i.vtu --surface " + ico).exit_code, 0);
   const auto i = nlohmann::json::parse(test::read_text(dir + "/i.json"));
-  const auto cone = step(i, "cone alternative")["counts"];
+  const auto cone = report_step(i, "cone alternative")["counts"];
   ASSERT_TRUE(cone["kept"].get<bool>());
   // The front's mesh: over a thousand tets, its smallest angle about 34 degrees.
-  EXPECT_GT(step(i, "cone alternative")["counts"]["min dihedral"].get<double>(),
-            step(i, "optimize")["counts"]["min dihedral after"].get<double>() + 10);
-  EXPECT_EQ(step(i, "write mesh")["counts"]["tets"], 80);
+  EXPECT_GT(report_step(i, "cone alternative")["counts"]["min dihedral"].get<double>(),
+            report_step(i, "optimize")["counts"]["min dihedral after"].get<double>() + 10);
+  EXPECT_EQ(report_step(i, "write mesh")["counts"]["tets"], 80);
 
   const std::string cross = test::data_path("good/cross.off");
   r = test::run_partet(cross + " -o " + dir + "/c.vtu --quiet --report " + dir + "/c.json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto c = nlohmann::json::parse(test::read_text(dir + "/c.json"));
-  EXPECT_TRUE(step(c, "cone alternative")["counts"]["star-shaped"].get<bool>());
-  EXPECT_FALSE(step(c, "cone alternative")["counts"]["kept"].get<bool>());
-  EXPECT_EQ(step(c, "write mesh")["counts"]["tets"], step(c, "optimize")["counts"]["tets"]);
+  EXPECT_TRUE(report_step(c, "cone alternative")["counts"]["star-shaped"].get<bool>());
+  EXPECT_FALSE(report_step(c, "cone alternative")["counts"]["kept"].get<bool>());
+  EXPECT_EQ(report_step(c, "write mesh")["counts"]["tets"], report_step(c, "optimize")["counts"]["tets"]);
 }
 
 TEST(ConeAlternative, NotTriedOnLargerSurfaces) {
@@ -94,7 +91,7 @@ TEST(ConeAlternative, NotTriedOnLargerSurfaces) {
   auto r = test::run_partet(in + " -o " + dir + "/s.vtu --quiet --report " + dir + "/s.json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto s = nlohmann::json::parse(test::read_text(dir + "/s.json"));
-  EXPECT_TRUE(step(s, "cone alternative").is_null());
+  EXPECT_TRUE(report_step(s, "cone alternative").is_null());
 }
 
 }  // namespace

@@ -15,11 +15,7 @@
 namespace partet {
 namespace {
 
-nlohmann::json step(const nlohmann::json& report, const std::string& name) {
-  for (const auto& s : report["steps"])
-    if (s["name"] == name) return s;
-  return nullptr;
-}
+using test::report_step;
 
 nlohmann::json mesh_report(const std::string& in, const std::string& dir, const std::string& name) {
   const std::string base = dir + "/" + name;
@@ -56,30 +52,30 @@ TEST(MorePasses, TheTwiceRefinedCubeGetsTheMorePassesMesh) {
   write_surface_file(refine_midpoints(refine_midpoints(read_surface_file(test::data_path("good/cube.off")))), cube,
                      {});
   const auto report = mesh_report(cube, dir, "cube");
-  const auto more = step(report, "more passes alternative")["counts"];
+  const auto more = report_step(report, "more passes alternative")["counts"];
   ASSERT_TRUE(more["kept"].get<bool>());
   EXPECT_EQ(more["passes"], 5);
   // Three passes stop under 30 degrees; five lift it past 35.
-  EXPECT_LT(step(report, "optimize")["counts"]["min dihedral after"].get<double>(), 30);
+  EXPECT_LT(report_step(report, "optimize")["counts"]["min dihedral after"].get<double>(), 30);
   EXPECT_GT(more["min dihedral"].get<double>(), 35);
-  EXPECT_EQ(step(report, "write mesh")["counts"]["tets"], more["tets"]);
+  EXPECT_EQ(report_step(report, "write mesh")["counts"]["tets"], more["tets"]);
 }
 
 TEST(MorePasses, TheCrossKeepsItsThreePassesMesh) {
   const std::string dir = test::scratch_dir("more_passes_cross");
   const auto report = mesh_report(test::data_path("good/cross.off"), dir, "cross");
-  const auto more = step(report, "more passes alternative")["counts"];
+  const auto more = report_step(report, "more passes alternative")["counts"];
   EXPECT_FALSE(more["kept"].get<bool>());
   EXPECT_LT(more["min dihedral"].get<double>(),
-            step(report, "optimize")["counts"]["min dihedral after"].get<double>());
-  EXPECT_EQ(step(report, "write mesh")["counts"]["tets"], step(report, "optimize")["counts"]["tets"]);
+            report_step(report, "optimize")["counts"]["min dihedral after"].get<double>());
+  EXPECT_EQ(report_step(report, "write mesh")["counts"]["tets"], report_step(report, "optimize")["counts"]["tets"]);
 }
 
 TEST(MorePasses, NotTriedOnLargerMeshes) {
   const std::string dir = test::scratch_dir("more_passes_large");
   const auto report = mesh_report(test::data_path("good/sphere966.off"), dir, "sphere");
-  EXPECT_TRUE(step(report, "more passes alternative").is_null());
-  EXPECT_GT(step(report, "face removals (tree)")["counts"]["tets"].get<size_t>(), kMorePassesTets);
+  EXPECT_TRUE(report_step(report, "more passes alternative").is_null());
+  EXPECT_GT(report_step(report, "face removals (tree)")["counts"]["tets"].get<size_t>(), kMorePassesTets);
 }
 
 }  // namespace
