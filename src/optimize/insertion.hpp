@@ -75,16 +75,17 @@
 // beat its worst tet (cone_bound.hpp: at an edge between two outer faces
 // the cones split the cavity's angle); the bound skipped 45 % of handle
 // r1's cavities, never one that would have succeeded on the quick sets
-// (same meshes). A kernel point is tried only when its cone already beats the cavity. The
-// new vertex is then smoothed (smoothing.hpp), and the insertion is kept only
-// if the worst new tet beats the worst tet of the cavity and either the
-// total shortfall (sum of bar - quality over the tets below bar =
+// (same meshes). A kernel point is tried only when its cone already beats
+// the cavity. The new vertex is then smoothed in its would-be star before
+// any tet changes (smooth_new_vertex, smoothing.hpp), and the insertion is
+// made only if the worst new tet beats the worst tet of the cavity and
+// either the total shortfall (sum of bar - quality over the tets below bar =
 // min(target, quality of 20 degrees)) does not grow, so that one bad tet is
 // not traded for many mediocre ones, or the worst tet of the cavity has an
 // angle under 10 degrees and no new tet does (a sliver traded for a few
-// mediocre tets is a gain). Otherwise the
-// cavity and the vertex arrays are restored exactly. Every new tet is
-// positive by exact orient3d (the cavity is star-shaped from the point).
+// mediocre tets is a gain). Otherwise the trial's vertex is dropped and
+// nothing has changed. Every new tet is positive by exact orient3d (the
+// cavity is star-shaped from the point).
 // The cavity's outer faces, boundary faces among them, stay as they are,
 // and a cavity with a vertex on none of them (which would vanish) is not
 // used, but in step 6 when the vertex is free.
@@ -150,23 +151,6 @@ struct CavityGrowth {
   const std::vector<uint8_t>& frozen;
   size_t vertices_removed = 0;
 };
-
-// What a cone trial must put back: the new slots (`created`), and the
-// incident tets and change marks of the cavity's vertices before it.
-struct ConeTrial {
-  std::vector<uint32_t> created, incident, marks;
-};
-
-// A trial vertex v, the mesh's last vertex (added by the caller, no tet has
-// it yet): apply_cone replaces `cavity`'s tets (vertex quadruples
-// `old_tets`) by `new_tets`, which join its outer faces to v, and smooths v.
-// undo_cone puts the cavity back as it was, leaving no trace (incident
-// tets: tet_topology.hpp, restore_incident; change marks: save_marks), and
-// drops v.
-void apply_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-                const std::vector<uint32_t>& new_tets, SmoothingScratch& scratch, ConeTrial& trial);
-void undo_cone(TetTopology& topo, const std::vector<uint32_t>& cavity, const std::vector<uint32_t>& old_tets,
-               const ConeTrial& trial);
 
 // `near_corners` enables step 5, `growth` step 6.
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch,

@@ -8,6 +8,7 @@
 #include "core/predicates.hpp"
 #include "optimize/cone_bound.hpp"
 #include "optimize/insertion.hpp"
+#include "optimize/smoothing.hpp"
 
 namespace partet {
 namespace {
@@ -25,8 +26,7 @@ double squared_length(const double* p, const double* q) {
 
 // Scratch of one sweep.
 struct Split {
-  std::vector<uint32_t> cavity, old_tets, new_tets, quads;
-  ConeTrial trial;
+  std::vector<uint32_t> cavity, old_tets, new_tets, created;
 };
 
 // Splits the edge of closed ring `ring` at its midpoint if that pays (see
@@ -60,13 +60,16 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
       }
       s.new_tets.insert(s.new_tets.end(), tet, tet + 4);
     }
-  apply_cone(topo, s.cavity, s.old_tets, s.new_tets, scratch, s.trial);
-  topo.tet_vertices(s.trial.created, s.quads);
+  smooth_new_vertex(topo, m, s.new_tets, scratch);
   double new_sum = 0;
-  for (size_t i = 0; i < s.quads.size(); i += 4) new_sum += radius_ratio_of(topo, &s.quads[i]);
-  const double added = static_cast<double>(s.trial.created.size() - s.cavity.size());
-  if (summarize_angles(topo, s.quads).no_worse_than(before) && new_sum - old_sum >= mean * added) return true;
-  undo_cone(topo, s.cavity, s.old_tets, s.trial);
+  for (size_t i = 0; i < s.new_tets.size(); i += 4) new_sum += radius_ratio_of(topo, &s.new_tets[i]);
+  const double added = static_cast<double>(s.new_tets.size() / 4 - s.cavity.size());
+  if (summarize_angles(topo, s.new_tets).no_worse_than(before) && new_sum - old_sum >= mean * added) {
+    s.created.clear();
+    topo.replace(s.cavity, s.new_tets, s.created);
+    return true;
+  }
+  topo.remove_last_vertex();
   return false;
 }
 
@@ -105,7 +108,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
       if (!topo.edge_ring(t, kTetEdges[longest][0], kTetEdges[longest][1], ring)) continue;
       if (!try_split(topo, ring, mean, scratch, s)) continue;
       ++split;
-      made.insert(made.end(), s.trial.created.begin(), s.trial.created.end());
+      made.insert(made.end(), s.created.begin(), s.created.end());
     }
     // The next round: the tets the splits made that are still needles
     // (a refused split would be refused again: its ring has not changed).

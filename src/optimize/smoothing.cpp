@@ -29,10 +29,13 @@ void cross3(const double* u, const double* w, double* out) {
   out[2] = u[0] * w[1] - u[1] * w[0];
 }
 
-// The star of v with v's position replaced by a trial point.
+// The star of v, as vertex quadruples (4 per tet, each having v), with v's
+// position replaced by a trial point.
 class Star {
  public:
-  Star(const TetTopology& topo, uint32_t v, const std::vector<uint32_t>& tets) : topo_(topo), v_(v), tets_(tets) {}
+  Star(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads)
+      : topo_(topo), v_(v), quads_(quads), n_(quads.size() / 4) {}
+  size_t size() const { return n_; }
 
   double quality(size_t k, const double* x) const {
     const double* p[4];
@@ -43,12 +46,12 @@ class Star {
   double quality_gradient(size_t k, const double* x, double* gradient) const {
     const double* p[4];
     points(k, x, p);
-    const uint32_t* t = topo_.tet(tets_[k]);
+    const uint32_t* t = &quads_[4 * k];
     const int j = t[0] == v_ ? 0 : t[1] == v_ ? 1 : t[2] == v_ ? 2 : 3;
     return tet_quality_gradient(p, j, gradient);
   }
   bool positive(const double* x) const {
-    for (size_t k = 0; k < tets_.size(); ++k) {
+    for (size_t k = 0; k < n_; ++k) {
       const double* p[4];
       points(k, x, p);
       if (orient3d(p[0], p[1], p[2], p[3]) <= 0) return false;
@@ -66,7 +69,7 @@ class Star {
       if (!(quality[k] > bar)) return false;
     }
     size_t next_first = 0;
-    for (size_t k = 0; k < tets_.size(); ++k) {
+    for (size_t k = 0; k < n_; ++k) {
       if (next_first < first.size() && first[next_first] == k) {
         ++next_first;
         continue;
@@ -84,26 +87,27 @@ class Star {
   // Mean distance from x to the other vertices of the star's tets.
   double scale(const double* x) const {
     double sum = 0;
-    for (size_t k = 0; k < tets_.size(); ++k) {
-      const uint32_t* t = topo_.tet(tets_[k]);
+    for (size_t k = 0; k < n_; ++k) {
+      const uint32_t* t = &quads_[4 * k];
       for (int i = 0; i < 4; ++i) {
         if (t[i] == v_) continue;
         const double* p = topo_.point(t[i]);
         sum += std::sqrt((p[0] - x[0]) * (p[0] - x[0]) + (p[1] - x[1]) * (p[1] - x[1]) + (p[2] - x[2]) * (p[2] - x[2]));
       }
     }
-    return sum / static_cast<double>(3 * tets_.size());
+    return sum / static_cast<double>(3 * n_);
   }
 
  private:
   void points(size_t k, const double* x, const double* p[4]) const {
-    const uint32_t* t = topo_.tet(tets_[k]);
+    const uint32_t* t = &quads_[4 * k];
     for (int i = 0; i < 4; ++i) p[i] = t[i] == v_ ? x : topo_.point(t[i]);
   }
 
   const TetTopology& topo_;
   uint32_t v_;
-  const std::vector<uint32_t>& tets_;
+  std::span<const uint32_t> quads_;
+  size_t n_;
 };
 
 // The point of segment ab of least norm.
@@ -142,24 +146,17 @@ bool odt_point(const TetTopology& topo, const std::vector<uint32_t>& star, doubl
   return true;
 }
 
-}  // namespace
-
-bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
-  topo.vertex_star(v, scratch.star);
-  if (scratch.star.empty()) return false;
-  const Star star(topo, v, scratch.star);
-  const size_t n = scratch.star.size();
-  double x[3];
-  std::copy_n(topo.point(v), 3, x);
+// The ascent of smooth_vertex over `star`, from x (moved in place);
+// scratch.quality holds the star's qualities at x on entry and at the
+// final x on return. True if x moved.
+bool ascend(const Star& star, double x[3], SmoothingScratch& scratch) {
+  const size_t n = star.size();
   const double scale = star.scale(x);
   if (!(scale > 0)) return false;
-  scratch.quality.resize(n);
   scratch.trial.resize(n);
   scratch.gradient.resize(3 * n);
   std::vector<size_t>& active = scratch.active;
   bool moved = false;
-
-  for (size_t k = 0; k < n; ++k) scratch.quality[k] = topo.quality(scratch.star[k]);
   for (int step = 0; step < kMaxSteps; ++step) {
     // scratch.quality holds the star's qualities at x.
     const double worst = *std::min_element(scratch.quality.begin(), scratch.quality.end());
@@ -196,8 +193,35 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     if (!improved) break;
     moved = true;
   }
-  if (moved) topo.move_vertex(v, x);
   return moved;
+}
+
+}  // namespace
+
+bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
+  topo.vertex_star(v, scratch.star);
+  if (scratch.star.empty()) return false;
+  topo.tet_vertices(scratch.star, scratch.quads);
+  const Star star(topo, v, scratch.quads);
+  scratch.quality.resize(star.size());
+  for (size_t k = 0; k < star.size(); ++k) scratch.quality[k] = topo.quality(scratch.star[k]);
+  double x[3];
+  std::copy_n(topo.point(v), 3, x);
+  if (!ascend(star, x, scratch)) return false;
+  topo.move_vertex(v, x);
+  return true;
+}
+
+bool smooth_new_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> quads, SmoothingScratch& scratch) {
+  const Star star(topo, v, quads);
+  if (star.size() == 0) return false;
+  double x[3];
+  std::copy_n(topo.point(v), 3, x);
+  scratch.quality.resize(star.size());
+  for (size_t k = 0; k < star.size(); ++k) scratch.quality[k] = star.quality(k, x);
+  if (!ascend(star, x, scratch)) return false;
+  topo.place_vertex(v, x);
+  return true;
 }
 
 // One to three gradients are the usual case (two on average on femur).
@@ -271,7 +295,8 @@ void least_norm_direction(const std::vector<double>& gradient, const std::vector
 bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   topo.vertex_star(v, scratch.star);
   if (scratch.star.empty()) return false;
-  const Star star(topo, v, scratch.star);
+  topo.tet_vertices(scratch.star, scratch.quads);
+  const Star star(topo, v, scratch.quads);
   const size_t n = scratch.star.size();
   // The neighbours, each once.
   std::vector<uint32_t>& around = scratch.neighbours;

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "optimize/tet_topology.hpp"
@@ -27,6 +28,7 @@ namespace partet {
 // Scratch space reused across calls (no allocation per vertex).
 struct SmoothingScratch {
   std::vector<uint32_t> star;
+  std::vector<uint32_t> quads;   // the star's vertex quadruples
   std::vector<double> quality;   // per star tet
   std::vector<double> trial;     // per star tet, at a trial point
   std::vector<double> gradient;  // 3 per star tet
@@ -37,6 +39,14 @@ struct SmoothingScratch {
 
 // Moves v when that raises the worst quality of its star; true if it moved.
 bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
+
+// smooth_vertex for a vertex no tet has yet (an insertion trial's, before
+// it joins the mesh): its star is to be `quads` (vertex quadruples, each
+// having v, positive at v's point), which the topology does not hold. v's
+// point moves (TetTopology::place_vertex) as smooth_vertex would move it
+// in that star, and scratch.quality is left holding the tet_quality of
+// each of `quads` at v's final point. True if v moved.
+bool smooth_new_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> quads, SmoothingScratch& scratch);
 
 // Smart Laplacian relaxation: moves v to the volume-weighted mean of its
 // tets' circumcentres (the optimal Delaunay triangulation point), else to

@@ -107,6 +107,11 @@ void TetTopology::remove_last_vertex() {
   changed_at_.pop_back();
 }
 
+void TetTopology::place_vertex(uint32_t v, const double* x) {
+  PARTET_ASSERT(vertex_tet_[v] == kNone, "placing a vertex that tets have");
+  std::copy_n(x, 3, &mesh_.xyz[3 * size_t{v}]);
+}
+
 std::vector<uint8_t> TetTopology::boundary_vertices() const {
   std::vector<uint8_t> boundary(num_vertices(), 0);
   for (uint32_t code = 0; code < twin_.size(); ++code) {
@@ -272,18 +277,6 @@ void TetTopology::vertex_star(uint32_t v, std::vector<uint32_t>& star) const {
       mark_[other / 4] = stamp;
       star.push_back(other / 4);
     }
-  }
-}
-
-void TetTopology::restore_incident(std::span<const uint32_t> quads, std::span<const uint32_t> incident,
-                                   std::span<const uint32_t> moved_from, std::span<const uint32_t> moved_to) {
-  PARTET_ASSERT(quads.size() == incident.size() && moved_from.size() == moved_to.size(), "incident lists disagree");
-  for (size_t i = 0; i < quads.size(); ++i) {
-    uint32_t t = incident[i];
-    const auto at = std::find(moved_from.begin(), moved_from.end(), t);
-    if (at != moved_from.end()) t = moved_to[static_cast<size_t>(at - moved_from.begin())];
-    PARTET_ASSERT(t != kNone && alive(t) && local_index(tet(t), quads[i]) >= 0, "restored incident tet lacks its vertex");
-    vertex_tet_[quads[i]] = t;
   }
 }
 

@@ -58,9 +58,11 @@ class TetTopology {
   size_t num_vertices() const { return mesh_.num_vertices(); }
 
   // Appends a vertex at p (no tet has it yet; with global ids, `global_id`
-  // is its id); remove_last_vertex() drops it again once no tet has it.
+  // is its id); remove_last_vertex() drops it again once no tet has it,
+  // and place_vertex() puts it at x while no tet has it.
   uint32_t add_vertex(const double* p, uint64_t global_id);
   void remove_last_vertex();
+  void place_vertex(uint32_t v, const double* x);
 
   // Vertices on boundary faces (faces of exactly one tet): 1, else 0.
   std::vector<uint8_t> boundary_vertices() const;
@@ -72,20 +74,6 @@ class TetTopology {
   // created tets by the n old ones puts every old tet back in its slot.
   void replace(std::span<const uint32_t> old_tets, std::span<const uint32_t> new_tets,
                std::vector<uint32_t>& created);
-
-  // The incident tet of each vertex of `quads` (4 vertex indices per tet),
-  // in `incident` (one per entry), taken before a trial replace(); after
-  // its reverse, restore_incident() puts them back, an incident tet that
-  // was moved from slot moved_from[i] to moved_to[i] (the trial's cavity
-  // and the reverse's created slots) following it. A trial and its reverse
-  // move the incident tets, where star walks start: restoring them makes
-  // the trial leave no trace when the tets are back in their slots.
-  void incident_tets(std::span<const uint32_t> quads, std::vector<uint32_t>& incident) const {
-    incident.clear();
-    for (uint32_t v : quads) incident.push_back(vertex_tet_[v]);
-  }
-  void restore_incident(std::span<const uint32_t> quads, std::span<const uint32_t> incident,
-                        std::span<const uint32_t> moved_from, std::span<const uint32_t> moved_to);
 
   // The tets around the edge (v[i], v[j]) of tet t, when they close a ring
   // of at most kMaxRing tets: a = v[i], b = v[j], ring vertices r_0..r_{n-1}
@@ -130,16 +118,6 @@ class TetTopology {
       if (changed_at_[tet(t)[k]] > count) return false;
     return true;
   }
-  // A trial undone exactly (apply_cone / undo_cone) restores the marks of
-  // the vertices it touched: `quads`' vertices, saved before the trial.
-  void save_marks(std::span<const uint32_t> quads, std::vector<uint32_t>& saved) const {
-    saved.clear();
-    for (uint32_t v : quads) saved.push_back(changed_at_[v]);
-  }
-  void restore_marks(std::span<const uint32_t> quads, std::span<const uint32_t> saved) {
-    for (size_t i = 0; i < quads.size(); ++i) changed_at_[quads[i]] = saved[i];
-  }
-
   // Writes the alive tets back to the mesh's tet array, in slot order.
   void compact();
 

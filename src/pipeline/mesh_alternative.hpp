@@ -1,7 +1,7 @@
 // An alternative mesh of the same surface, optimized and kept in place of
 // the optimized mesh only when it is better in the optimizer's three
-// measures (better_quality). The cone alternative and the more-passes
-// alternative both end this way.
+// measures (better_quality). The cone alternative and the other pass
+// counts (pass_alternatives.hpp) all end this way.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -39,8 +39,8 @@
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/cone_alternative.hpp"
-#include "pipeline/more_passes.hpp"
 #include "pipeline/optimize_step.hpp"
+#include "pipeline/pass_alternatives.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/tree_removal_step.hpp"
 #include "pipeline/treeless_step.hpp"
@@ -607,17 +607,12 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       release_build_state(s);
       QualityStats optimized;  // the mesh after the optimizer (rank 0)
       const bool few_tets = options.optimize_passes > 0 &&
-                            comm.max(static_cast<int64_t>(root_rank && s.mesh.num_tets() <= kMorePassesTets)) > 0;
+                            comm.max(static_cast<int64_t>(root_rank && s.mesh.num_tets() <= kPassAlternativeTets)) > 0;
       TetMesh front_mesh = few_tets && root_rank ? s.mesh : TetMesh{};
       if (options.optimize_passes > 0) {
         report.run_step("optimize", [&] { return optimize_step(comm, s.mesh, optimize_options(options), optimized); });
       }
-      if (few_tets) {
-        report.run_step("more passes alternative", [&] {
-          if (!root_rank) return ojson::object();
-          return try_more_passes(s.mesh, std::move(front_mesh), optimized, optimize_options(options));
-        });
-      }
+      if (few_tets) run_pass_alternatives(report, root_rank, s.mesh, front_mesh, optimized, optimize_options(options));
       if (options.optimize_passes > 0 &&
           comm.max(static_cast<int64_t>(root_rank && s.mesh.num_triangles() <= kConeTriangles)) > 0) {
         report.run_step("cone alternative", [&] {

@@ -1,16 +1,19 @@
 // TetTopology's bookkeeping that the optimizer's trials rely on: a trial
-// replace() and its reverse, with the incident tets restored, leave every
-// slot and every vertex star (and its walk order) as they were; the
-// neighbours of a star come each once, ascending (star_neighbours); the
-// change marks name exactly the tets whose vertex stars a move or a
-// replace touched, and a cone trial undone leaves them as they were.
+// vertex smoothed in its would-be star (smooth_new_vertex) lands where
+// smooth_vertex takes it once the star is in the mesh, and a failed
+// insertion leaves every slot, every vertex star (and its walk order) and
+// every change mark as they were; the neighbours of a star come each
+// once, ascending (star_neighbours); the change marks name exactly the
+// tets whose vertex stars a move or a replace touched.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <vector>
 
+#include "core/predicates.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/smoothing.hpp"
+#include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
 #include "optimize_test_util.hpp"
 
@@ -31,9 +34,7 @@ struct Snapshot {
   std::vector<std::vector<uint32_t>> stars;  // per vertex, in walk order
 };
 
-// Slots past the last alive one are left out: a trial with more new tets
-// than old ones appends slots, dead again after the reverse (the next new
-// tets take them as they would have been appended).
+// Slots past the last alive one are left out.
 Snapshot snapshot(const TetTopology& topo) {
   Snapshot s;
   uint32_t used = topo.slots();
@@ -62,50 +63,79 @@ std::vector<uint32_t> cone_tets(const TetTopology& topo, const std::vector<uint3
   return new_tets;
 }
 
-// Cones a new vertex at p to the outer faces of `cavity` and takes it out
-// again, as insertion trials do; with `restore`, the incident tets too.
-void trial(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, bool restore) {
-  std::vector<uint32_t> old_tets, created, restored, incident;
-  topo.tet_vertices(cavity, old_tets);
-  const uint32_t v = topo.add_vertex(p, 0);
-  const std::vector<uint32_t> new_tets = cone_tets(topo, cavity, v);
-  topo.incident_tets(old_tets, incident);
-  topo.replace(cavity, new_tets, created);
-  topo.replace(created, old_tets, restored);
-  if (restore) topo.restore_incident(old_tets, incident, cavity, restored);
-  topo.remove_last_vertex();
-}
-
-TEST(TetTopology, ATrialAndItsReverseLeaveNoTrace) {
-  TetMesh m = lattice();
-  TetTopology topo(m);
-  const Snapshot before = snapshot(topo);
-  // The centre's star (24 tets, as many outer faces), and the ring of an
-  // edge from the centre (2 outer faces per tet).
+TEST(TetTopology, ATrialVertexSmoothsAsInTheMesh) {
+  TetMesh m = lattice(), n = lattice();
+  TetTopology topo(m), applied(n);
   std::vector<uint32_t> star;
   topo.vertex_star(13, star);
   ASSERT_EQ(star.size(), 24u);
-  const double near_centre[3] = {1.01, 0.98, 1.02};
-  trial(topo, star, near_centre, true);
+  const Snapshot before = snapshot(topo);
+  const uint32_t changes = topo.changes();
+  // A vertex well off the centre of the centre's star: smoothing moves it.
+  const double off_centre[3] = {1.15, 0.9, 1.1};
+  const uint32_t v = topo.add_vertex(off_centre, 0);
+  const std::vector<uint32_t> new_tets = cone_tets(topo, star, v);
+  for (size_t i = 0; i < new_tets.size(); i += 4)
+    ASSERT_GT(orient3d(topo.point(new_tets[i]), topo.point(new_tets[i + 1]), topo.point(new_tets[i + 2]),
+                       topo.point(new_tets[i + 3])),
+              0);
+  SmoothingScratch scratch;
+  ASSERT_TRUE(smooth_new_vertex(topo, v, new_tets, scratch));
+  const double placed[3] = {topo.point(v)[0], topo.point(v)[1], topo.point(v)[2]};
+  EXPECT_NE(placed[0], off_centre[0]);
+
+  // The same cone put in the mesh first, then smoothed there.
+  const uint32_t w = applied.add_vertex(off_centre, 0);
+  std::vector<uint32_t> created;
+  applied.replace(star, cone_tets(applied, star, w), created);
+  SmoothingScratch other;
+  ASSERT_TRUE(smooth_vertex(applied, w, other));
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(placed[i], applied.point(w)[i], 1e-9) << i;
+  // scratch.quality holds the cone's qualities at the placed point, whose
+  // worst rose from the start.
+  ASSERT_EQ(scratch.quality.size(), new_tets.size() / 4);
+  double worst = 1, start = 1;
+  for (size_t k = 0; k < scratch.quality.size(); ++k) {
+    const uint32_t* q = &new_tets[4 * k];
+    const double* p[4];
+    const double* s[4];
+    for (int i = 0; i < 4; ++i) {
+      p[i] = q[i] == v ? placed : m.xyz.data() + 3 * size_t{q[i]};
+      s[i] = q[i] == v ? off_centre : m.xyz.data() + 3 * size_t{q[i]};
+    }
+    EXPECT_EQ(scratch.quality[k], tet_quality(p[0], p[1], p[2], p[3])) << k;
+    worst = std::min(worst, scratch.quality[k]);
+    start = std::min(start, tet_quality(s[0], s[1], s[2], s[3]));
+  }
+  EXPECT_GT(worst, start);
+  topo.remove_last_vertex();
   EXPECT_EQ(snapshot(topo).tets, before.tets);
   EXPECT_EQ(snapshot(topo).stars, before.stars);
+  EXPECT_EQ(topo.changes(), changes);
+}
 
-  TetTopology::Ring ring;
-  const uint32_t* t = topo.tet(star[0]);
-  const int centre = local_index(t, 13);
-  ASSERT_TRUE(topo.edge_ring(star[0], centre, (centre + 1) % 4, ring));
-  const double* a = topo.point(ring.a);
-  const double* b = topo.point(ring.b);
-  const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  trial(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, true);
-  EXPECT_EQ(snapshot(topo).tets, before.tets);
-  EXPECT_EQ(snapshot(topo).stars, before.stars);
-
-  // Without the restore, the slots come back but some star walks start
-  // elsewhere: the restore is what makes a failed trial invisible.
-  trial(topo, star, near_centre, false);
-  EXPECT_EQ(snapshot(topo).tets, before.tets);
-  EXPECT_NE(snapshot(topo).stars, before.stars);
+TEST(TetTopology, AFailedInsertionLeavesNoTrace) {
+  TetMesh m = lattice();
+  TetTopology topo(m);
+  SmoothingScratch scratch;
+  // Each tet of the lattice in turn, under both rules: where no cavity
+  // pays (most tets: the lattice is already good), the topology is as it
+  // was, star walk orders and change marks included.
+  int failed = 0;
+  for (const InsertionRule rule : {InsertionRule::kShortfall, InsertionRule::kWorstFirst})
+    for (uint32_t t = 0; t < topo.slots(); ++t) {
+      if (!topo.alive(t)) continue;
+      const Snapshot before = snapshot(topo);
+      const uint32_t changes = topo.changes();
+      const size_t vertices = topo.num_vertices();
+      if (insert_vertex(topo, t, quality_of_angle(40), scratch, rule)) continue;
+      ++failed;
+      EXPECT_EQ(snapshot(topo).tets, before.tets) << t;
+      EXPECT_EQ(snapshot(topo).stars, before.stars) << t;
+      EXPECT_EQ(topo.changes(), changes) << t;
+      EXPECT_EQ(topo.num_vertices(), vertices) << t;
+    }
+  EXPECT_GT(failed, 10);
 }
 
 TEST(TetTopology, StarNeighboursComeOnceAscending) {
@@ -148,7 +178,7 @@ std::vector<bool> untouched(const TetTopology& topo, const std::vector<uint32_t>
   return out;
 }
 
-TEST(TetTopology, ChangeMarksFollowMovesAndReplacesAndTrialsUndone) {
+TEST(TetTopology, ChangeMarksFollowMovesAndReplaces) {
   TetMesh m = test::kuhn_lattice(3);
   TetTopology topo(m);
   const uint32_t centre = 21;  // (1, 1, 1), interior
@@ -166,28 +196,15 @@ TEST(TetTopology, ChangeMarksFollowMovesAndReplacesAndTrialsUndone) {
   EXPECT_GT(std::count(after_move.begin(), after_move.end(), true), 0);
   EXPECT_GT(std::count(after_move.begin(), after_move.end(), false), 0);
 
-  // A cone trial undone (as insertion trials are) changes nothing.
-  const uint32_t before_trial = topo.changes();
   std::vector<uint32_t> old_tets;
   topo.tet_vertices(star, old_tets);
   const double inside[3] = {1.05, 1.0, 0.97};
-  const uint32_t v = topo.add_vertex(inside, 0);
-  std::vector<uint32_t> new_tets = cone_tets(topo, star, v);
-  SmoothingScratch scratch;
-  ConeTrial trial;
-  apply_cone(topo, star, old_tets, new_tets, scratch, trial);
-  EXPECT_GT(topo.changes(), before_trial);
-  undo_cone(topo, star, old_tets, trial);
-  const std::vector<bool> after_trial = unchanged(topo, before_trial);
-  EXPECT_EQ(std::count(after_trial.begin(), after_trial.end(), false), 0);
 
   // A replace kept changes the stars of the cavity's vertices.
   const uint32_t before_replace = topo.changes();
   std::vector<uint32_t> created;
   const uint32_t w = topo.add_vertex(inside, 0);
-  for (uint32_t& x : new_tets)
-    if (x == v) x = w;
-  topo.replace(star, new_tets, created);
+  topo.replace(star, cone_tets(topo, star, w), created);
   std::vector<uint32_t> cavity_vertices = old_tets;
   cavity_vertices.push_back(w);
   const std::vector<bool> after_replace = unchanged(topo, before_replace);
