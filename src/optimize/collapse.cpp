@@ -76,9 +76,8 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   uint32_t corners[4];
   std::copy_n(topo.tet(t), 4, corners);
   for (uint32_t v : corners) {
-    if (v >= frozen.size() || frozen[v]) continue;
+    if (v >= frozen.size() || frozen[v] || topo.on_boundary(v)) continue;
     topo.vertex_star(v, star);
-    if (on_open_face(topo, v, star)) continue;
     double old_quality = std::numeric_limits<double>::infinity(), old_deficit = 0;
     int old_slivers = 0;
     for (uint32_t s : star) {

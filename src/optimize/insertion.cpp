@@ -372,8 +372,8 @@ bool near_boundary_corner(TetTopology& topo, uint32_t t, double bar, SmoothingSc
   std::copy_n(topo.tet(t), 4, corners);
   std::vector<uint32_t> star;
   for (uint32_t corner : corners) {
+    if (!topo.on_boundary(corner)) continue;
     topo.vertex_star(corner, star);
-    if (!on_open_face(topo, corner, star)) continue;
     const KernelPoint deep = deepest_kernel_point(outer_faces(topo, star));
     if (!deep.found || !(deep.depth > 0)) continue;
     const double* at = topo.point(corner);
@@ -440,13 +440,11 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     // The tets around t's vertices: a kernel with room for a good vertex.
     // A vertex of t off the boundary has its whole star in that cavity, on
     // none of its outer faces: it would vanish, and the cavity is not used.
-    std::vector<uint32_t> wider = cavity, star;
     bool open = true;
-    for (int k = 0; k < 4; ++k) {
-      const uint32_t corner = topo.tet(t)[k];
-      topo.vertex_star(corner, star);
-      open = on_open_face(topo, corner, star);
-      if (!open) break;
+    for (int k = 0; k < 4; ++k) open = open && topo.on_boundary(topo.tet(t)[k]);
+    std::vector<uint32_t> wider = cavity, star;
+    for (int k = 0; k < 4 && open; ++k) {
+      topo.vertex_star(topo.tet(t)[k], star);
       for (uint32_t s : star)
         if (std::find(wider.begin(), wider.end(), s) == wider.end()) wider.push_back(s);
     }

@@ -87,6 +87,7 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
       link(4 * t + f, 4 * match + g);
     }
   }
+  on_boundary_ = boundary_vertices();
 }
 
 uint32_t TetTopology::add_vertex(const double* p, uint64_t global_id) {
@@ -95,6 +96,7 @@ uint32_t TetTopology::add_vertex(const double* p, uint64_t global_id) {
   mesh_.xyz.insert(mesh_.xyz.end(), p, p + 3);
   if (!mesh_.global_ids.empty()) mesh_.global_ids.push_back(global_id);
   vertex_tet_.push_back(kNone);
+  on_boundary_.push_back(0);
   changed_at_.push_back(0);
   return v;
 }
@@ -104,6 +106,7 @@ void TetTopology::remove_last_vertex() {
   mesh_.xyz.resize(mesh_.xyz.size() - 3);
   if (!mesh_.global_ids.empty()) mesh_.global_ids.pop_back();
   vertex_tet_.pop_back();
+  on_boundary_.pop_back();
   changed_at_.pop_back();
 }
 

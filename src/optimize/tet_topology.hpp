@@ -66,6 +66,10 @@ class TetTopology {
 
   // Vertices on boundary faces (faces of exactly one tet): 1, else 0.
   std::vector<uint8_t> boundary_vertices() const;
+  // Vertex v is on a boundary face (its link is not closed). Fixed for the
+  // topology's life: replace() keeps a cavity's outer faces, so the
+  // boundary faces never change, and added vertices are interior.
+  bool on_boundary(uint32_t v) const { return on_boundary_[v] != 0; }
 
   // Replaces the alive, distinct tets `old_tets` by `new_tets` (4 vertex
   // indices each); the slots of the new tets are appended to `created`.
@@ -130,6 +134,7 @@ class TetTopology {
   TetMesh& mesh_;
   std::vector<uint32_t> twin_;         // per face code
   std::vector<uint32_t> vertex_tet_;   // an alive tet having the vertex, or kNone
+  std::vector<uint8_t> on_boundary_;   // see on_boundary
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
   double measure(uint32_t t) const;
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
@@ -171,15 +176,5 @@ inline int local_index(const uint32_t* tet, uint32_t v) {
   return -1;
 }
 
-// Some tet of `star` (v's star, vertex_star) has a face through v with no
-// tet behind it: v is on the boundary and its link is not closed.
-inline bool on_open_face(const TetTopology& topo, uint32_t v, std::span<const uint32_t> star) {
-  for (uint32_t s : star) {
-    const int lv = local_index(topo.tet(s), v);
-    for (int f = 0; f < 4; ++f)
-      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return true;
-  }
-  return false;
-}
 
 }  // namespace partet

@@ -115,6 +115,17 @@ TEST(Collapse, OptimizeMeshCountsCollapsesAndKeepsTheMeshValid) {
   EXPECT_TRUE(r.valid) << format_text(r);
 }
 
+// Some tet of `star` (v's star) has a face through v with no tet behind
+// it: v is on the boundary (found from the star, not TetTopology's flags).
+bool on_open_face(const TetTopology& topo, uint32_t v, const std::vector<uint32_t>& star) {
+  for (uint32_t s : star) {
+    const int lv = local_index(topo.tet(s), v);
+    for (int f = 0; f < 4; ++f)
+      if (f != lv && topo.twin(4 * s + f) == TetTopology::kNone) return true;
+  }
+  return false;
+}
+
 // collapse_vertex without the screening: every neighbour's cones measured
 // in star order, the first not above the bar to beat ending it.
 bool exhaustive_collapse(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& frozen, double bar,

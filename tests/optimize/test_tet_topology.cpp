@@ -138,6 +138,25 @@ TEST(TetTopology, AFailedInsertionLeavesNoTrace) {
   EXPECT_GT(failed, 10);
 }
 
+TEST(TetTopology, BoundaryVerticesStayWhatTheyWere) {
+  TetMesh m = lattice();
+  TetTopology topo(m);
+  const std::vector<uint8_t> boundary = topo.boundary_vertices();
+  for (uint32_t v = 0; v < topo.num_vertices(); ++v) EXPECT_EQ(topo.on_boundary(v), boundary[v] != 0) << v;
+  EXPECT_FALSE(topo.on_boundary(13));  // the lattice's one interior vertex
+  EXPECT_TRUE(topo.on_boundary(0));
+  // A vertex coned into the centre's star is interior, and the boundary
+  // (faces of one tet) is the same after the replace.
+  std::vector<uint32_t> star, created;
+  topo.vertex_star(13, star);
+  const double inside[3] = {1.05, 1.0, 0.97};
+  const uint32_t w = topo.add_vertex(inside, 0);
+  topo.replace(star, cone_tets(topo, star, w), created);
+  EXPECT_FALSE(topo.on_boundary(w));
+  const std::vector<uint8_t> after = topo.boundary_vertices();
+  for (uint32_t v = 0; v < topo.num_vertices(); ++v) EXPECT_EQ(topo.on_boundary(v), after[v] != 0) << v;
+}
+
 TEST(TetTopology, StarNeighboursComeOnceAscending) {
   TetMesh m = lattice();
   TetTopology topo(m);
