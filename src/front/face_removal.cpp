@@ -342,8 +342,7 @@ void Remover::find_closers(uint32_t f) {
   closers_.clear();
   for (int k = 0; k < 3; ++k) {
     const uint32_t u = t[k], w = t[(k + 1) % 3];
-    front_.for_each_face_on_edge(u, w, [&](uint32_t g) {
-      if (g == f) return;
+    front_.for_each_other_face_on_edge(f, u, w, [&](uint32_t g) {
       const uint32_t* h = front_.face(g);
       for (int i = 0; i < 3; ++i)
         if (h[i] != u && h[i] != w) closers_.push_back(h[i]);

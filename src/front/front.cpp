@@ -68,7 +68,7 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
   alive_.reserve(n);
   // A closed front has 3/2 edges per face; both tables shrink from here.
   face_of_triple_.reserve(n);
-  edge_uses_.reserve(n + n / 2);
+  edge_faces_.reserve(n + n / 2);
   for (size_t f = 0; f < n; ++f) {
     const uint32_t* t = &initial.faces[3 * f];
     PARTET_ASSERT(find_face(t[0], t[1], t[2]) == kNoIndex, "initial front has two faces on one vertex triple");
@@ -89,20 +89,25 @@ uint32_t Front::find_face(uint32_t a, uint32_t b, uint32_t c) const {
   return f ? *f : kNoIndex;
 }
 
+const Front::EdgeFaces* Front::find_edge(uint32_t a, uint32_t b) const { return edge_faces_.find(edge_key(a, b)); }
+
 uint32_t Front::edge_uses(uint32_t a, uint32_t b) const {
-  const uint32_t* n = edge_uses_.find(edge_key(a, b));
-  return n ? *n : 0;
+  const EdgeFaces* edge = find_edge(a, b);
+  return edge ? edge->uses : 0;
 }
 
-void Front::change_edge(uint32_t a, uint32_t b, int delta) {
+void Front::change_edge(uint32_t a, uint32_t b, uint32_t f, int delta) {
   const uint64_t key = edge_key(a, b);
   if (delta > 0) {
-    ++edge_uses_.get_or_insert(key, 0);
+    EdgeFaces& edge = edge_faces_.get_or_insert(key, EdgeFaces{});
+    ++edge.uses;
+    edge.faces_xor ^= f;
     return;
   }
-  uint32_t* n = edge_uses_.find(key);
-  PARTET_ASSERT(n && *n > 0, "front edge count underflow");
-  if (--*n == 0) edge_uses_.erase(key);
+  EdgeFaces* edge = edge_faces_.find(key);
+  PARTET_ASSERT(edge && edge->uses > 0, "front edge count underflow");
+  edge->faces_xor ^= f;
+  if (--edge->uses == 0) edge_faces_.erase(key);
 }
 
 void Front::use_vertex(uint32_t v) {
@@ -142,9 +147,9 @@ uint32_t Front::add_face(uint32_t a, uint32_t b, uint32_t c, const LeafCover* co
   face_first_entry_.push_back(kNoIndex);
   ++alive_count_;
   face_of_triple_.get_or_insert(sorted_triple(a, b, c), f);
-  change_edge(a, b, 1);
-  change_edge(b, c, 1);
-  change_edge(c, a, 1);
+  change_edge(a, b, f, 1);
+  change_edge(b, c, f, 1);
+  change_edge(c, a, f, 1);
   use_vertex(a);
   use_vertex(b);
   use_vertex(c);
@@ -213,9 +218,9 @@ void Front::close_face(uint32_t f, std::vector<uint32_t>& shrunk) {
   alive_[f] = 0;
   --alive_count_;
   face_of_triple_.erase(sorted_triple(a, b, c));
-  change_edge(a, b, -1);
-  change_edge(b, c, -1);
-  change_edge(c, a, -1);
+  change_edge(a, b, f, -1);
+  change_edge(b, c, f, -1);
+  change_edge(c, a, f, -1);
   uint32_t e = face_first_entry_[f];
   while (e != kNoIndex) {
     const uint32_t leaf = entry_leaf_[e];
@@ -377,15 +382,15 @@ std::vector<uint32_t> Front::compact() {
   for (uint32_t f = 0; f < n; ++f) list_face(f, false);
 
   face_of_triple_ = {};
-  edge_uses_ = {};
+  edge_faces_ = {};
   face_of_triple_.reserve(n);
-  edge_uses_.reserve(n + n / 2);
+  edge_faces_.reserve(n + n / 2);
   for (uint32_t f = 0; f < n; ++f) {
     const uint32_t* t = &faces_[3 * size_t{f}];
     face_of_triple_.get_or_insert(sorted_triple(t[0], t[1], t[2]), f);
-    change_edge(t[0], t[1], 1);
-    change_edge(t[1], t[2], 1);
-    change_edge(t[2], t[0], 1);
+    change_edge(t[0], t[1], f, 1);
+    change_edge(t[1], t[2], f, 1);
+    change_edge(t[2], t[0], f, 1);
   }
   return new_face;
 }

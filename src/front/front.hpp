@@ -119,6 +119,22 @@ class Front {
       if (has_u && has_w) visit(g);
     }
   }
+  // For an edge {u, w} of alive face f: calls visit(g) for every other
+  // alive face g on it. On an edge of two faces (most) the other comes
+  // from the edge's entry, the exclusive or of its faces, without a leaf
+  // scan; on more, in leaf list order.
+  template <class Visit>
+  void for_each_other_face_on_edge(uint32_t f, uint32_t u, uint32_t w, Visit&& visit) const {
+    const EdgeFaces* edge = find_edge(u, w);
+    if (!edge || edge->uses < 2) return;
+    if (edge->uses == 2) {
+      visit(edge->faces_xor ^ f);
+      return;
+    }
+    for_each_face_on_edge(u, w, [&](uint32_t g) {
+      if (g != f) visit(g);
+    });
+  }
 
   // Leaf index. Faces listed in `leaf`: first_face_entry, then next_entry
   // until kNoIndex; entry_face gives the face. Front vertices in `leaf`:
@@ -214,7 +230,8 @@ class Front {
   void close_face(uint32_t f, std::vector<uint32_t>& shrunk);
   void use_vertex(uint32_t v);
   void release_vertex(uint32_t v, std::vector<uint32_t>& shrunk);
-  void change_edge(uint32_t a, uint32_t b, int delta);
+  // Face f joins (delta 1) or leaves (-1) edge {a, b}.
+  void change_edge(uint32_t a, uint32_t b, uint32_t f, int delta);
 
   const LinearOctree* tree_;  // pointers and values: a Front is assignable (the tree-less
                               // removals restore a snapshot of it)
@@ -267,7 +284,13 @@ class Front {
   };
   static Triple sorted_triple(uint32_t a, uint32_t b, uint32_t c);
   FlatHashMap<Triple, uint32_t, TripleTraits> face_of_triple_;
-  FlatHashMap<uint64_t, uint32_t, EdgeTraits> edge_uses_;
+  // Per front edge: its alive faces, counted and combined by exclusive or.
+  struct EdgeFaces {
+    uint32_t uses = 0;
+    uint32_t faces_xor = 0;
+  };
+  FlatHashMap<uint64_t, EdgeFaces, EdgeTraits> edge_faces_;
+  const EdgeFaces* find_edge(uint32_t a, uint32_t b) const;
 };
 
 }  // namespace partet

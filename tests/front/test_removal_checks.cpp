@@ -1,9 +1,10 @@
-// The live front store (FrontStore) and the exact face removal checks
-// (RemovalChecks) on fronts made by hand over a one-leaf octree: closing a
-// tet, a vertex inside the candidate, a new edge piercing a front face, a
-// front edge crossing a new face, a duplicate face, and touching cases at
-// shared vertices and edges that must be accepted; what blocked a removal
-// keeps blocking it while it is on the front, and only then.
+// The live front store (FrontStore: edges, the other faces on an edge,
+// leaf lists) and the exact face removal checks (RemovalChecks) on fronts
+// made by hand over a one-leaf octree: closing a tet, a vertex inside the
+// candidate, a new edge piercing a front face, a front edge crossing a new
+// face, a duplicate face, and touching cases at shared vertices and edges
+// that must be accepted; what blocked a removal keeps blocking it while it
+// is on the front, and only then.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/predicates.hpp"
 #include "front/front.hpp"
 #include "front/initial_front.hpp"
 #include "front/removal_checks.hpp"
@@ -40,6 +42,53 @@ uint32_t face_on(const Front& front, uint32_t a, uint32_t b, uint32_t c) {
   const uint32_t f = front.find_face(a, b, c);
   EXPECT_NE(f, kNoIndex);
   return f;
+}
+
+// Every alive face's edges: the other faces for_each_other_face_on_edge
+// visits are those a scan of all alive faces finds on the edge.
+void expect_other_faces_found(const Front& front) {
+  for (uint32_t f = 0; f < front.num_face_slots(); ++f) {
+    if (!front.alive(f)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t u = front.face(f)[k], w = front.face(f)[(k + 1) % 3];
+      std::vector<uint32_t> visited, want;
+      front.for_each_other_face_on_edge(f, u, w, [&](uint32_t g) { visited.push_back(g); });
+      for (uint32_t g = 0; g < front.num_face_slots(); ++g) {
+        if (g == f || !front.alive(g)) continue;
+        const uint32_t* h = front.face(g);
+        if (std::count(h, h + 3, u) && std::count(h, h + 3, w)) want.push_back(g);
+      }
+      std::sort(visited.begin(), visited.end());
+      EXPECT_EQ(visited, want) << f << " " << u << "-" << w;
+    }
+  }
+}
+
+TEST(FrontStore, FindsTheOtherFacesOnAnEdge) {
+  // The bipyramid: two faces on every edge.
+  HandFront h = hand_front(kBipyramidXyz, kBipyramidOutward);
+  Front front(h.initial, h.tree, h.root);
+  expect_other_faces_found(front);
+  std::vector<uint32_t> added, shrunk;
+  front.apply_tet(face_on(front, 0, 1, 3), 2, added, shrunk);
+  expect_other_faces_found(front);
+
+  // Two tets joined at edge 0-1 only: four faces on that edge.
+  const std::vector<double> xyz = {0, 0, 0, 1, 0, 0, 0.5, 1, 0.2, 0.5, 0.5, 1, 0.5, -1, 0.2, 0.5, -0.5, -1};
+  std::vector<uint32_t> outward;
+  for (const std::array<uint32_t, 4>& tet : {std::array<uint32_t, 4>{0, 1, 2, 3}, std::array<uint32_t, 4>{0, 1, 4, 5}})
+    for (int l = 0; l < 4; ++l) {
+      std::array<uint32_t, 3> face;
+      for (int k = 0, n = 0; k < 4; ++k)
+        if (k != l) face[n++] = tet[k];
+      const double* p[4] = {&xyz[3 * face[0]], &xyz[3 * face[1]], &xyz[3 * face[2]], &xyz[3 * tet[l]]};
+      if (orient3d(p[0], p[1], p[2], p[3]) < 0) std::swap(face[0], face[1]);
+      outward.insert(outward.end(), face.begin(), face.end());
+    }
+  HandFront pinched = hand_front(xyz, outward);
+  Front two(pinched.initial, pinched.tree, pinched.root);
+  EXPECT_EQ(two.edge_uses(0, 1), 4u);
+  expect_other_faces_found(two);
 }
 
 TEST(FrontStore, HashesEdgesAndLeafLists) {
