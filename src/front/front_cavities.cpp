@@ -57,8 +57,14 @@ bool pair_faces_around_edge(const Front& front, uint32_t x, uint32_t y, const st
 }
 
 void faces_across_edge(const Front& front, uint32_t f, uint32_t x, uint32_t y, std::vector<uint32_t>& on_edge) {
+  on_edge.clear();
+  if (front.edge_uses(x, y) <= 2) {
+    front.for_each_other_face_on_edge(f, x, y, [&](uint32_t g) { on_edge.push_back(g); });
+    return;
+  }
+  front.for_each_face_on_edge(x, y, [&](uint32_t g) { on_edge.push_back(g); });
   std::vector<uint32_t> partner;
-  if (on_edge.size() > 2 && pair_faces_around_edge(front, x, y, on_edge, partner)) {
+  if (pair_faces_around_edge(front, x, y, on_edge, partner)) {
     on_edge.assign(1, partner[std::find(on_edge.begin(), on_edge.end(), f) - on_edge.begin()]);
     return;
   }

@@ -29,9 +29,10 @@ namespace partet {
 bool pair_faces_around_edge(const Front& front, uint32_t x, uint32_t y, const std::vector<uint32_t>& faces,
                             std::vector<uint32_t>& partner);
 
-// `on_edge` holds the alive faces on edge (x, y), f among them; leaves in it
-// the faces a walk from f crosses the edge to: f's partner where
-// pair_faces_around_edge pairs them, else every face but f.
+// The faces a walk from alive face f crosses its edge (x, y) to, in
+// `on_edge` (cleared first): f's partner where pair_faces_around_edge pairs
+// the edge's faces, else every other face on the edge (on an edge of two
+// faces, the other one, from the front's edge table).
 void faces_across_edge(const Front& front, uint32_t f, uint32_t x, uint32_t y, std::vector<uint32_t>& on_edge);
 
 // The alive faces grouped into cavities (connected across edges as

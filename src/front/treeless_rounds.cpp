@@ -573,8 +573,6 @@ std::vector<uint32_t> TreelessRemover::component_of(uint32_t f, size_t limit) {
   for (size_t head = 0; head < faces.size() && faces.size() <= limit; ++head) {
     const uint32_t* t = front_.face(faces[head]);
     for (int k = 0; k < 3; ++k) {
-      on_edge.clear();
-      front_.for_each_face_on_edge(t[k], t[(k + 1) % 3], [&](uint32_t g) { on_edge.push_back(g); });
       faces_across_edge(front_, faces[head], t[k], t[(k + 1) % 3], on_edge);
       for (uint32_t g : on_edge) {
         if (walk_mark_[g] == walk_) continue;

@@ -87,7 +87,12 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
       link(4 * t + f, 4 * match + g);
     }
   }
-  on_boundary_ = boundary_vertices();
+  on_boundary_.assign(mesh_.num_vertices(), 0);
+  for (uint32_t code = 0; code < twin_.size(); ++code) {
+    if (twin_[code] != kNone || !alive(code / 4)) continue;
+    for (int k = 0; k < 4; ++k)
+      if (k != static_cast<int>(code % 4)) on_boundary_[tet(code / 4)[k]] = 1;
+  }
 }
 
 uint32_t TetTopology::add_vertex(const double* p, uint64_t global_id) {
@@ -113,16 +118,6 @@ void TetTopology::remove_last_vertex() {
 void TetTopology::place_vertex(uint32_t v, const double* x) {
   PARTET_ASSERT(vertex_tet_[v] == kNone, "placing a vertex that tets have");
   std::copy_n(x, 3, &mesh_.xyz[3 * size_t{v}]);
-}
-
-std::vector<uint8_t> TetTopology::boundary_vertices() const {
-  std::vector<uint8_t> boundary(num_vertices(), 0);
-  for (uint32_t code = 0; code < twin_.size(); ++code) {
-    if (twin_[code] != kNone || !alive(code / 4)) continue;
-    for (int k = 0; k < 4; ++k)
-      if (k != static_cast<int>(code % 4)) boundary[tet(code / 4)[k]] = 1;
-  }
-  return boundary;
 }
 
 uint32_t TetTopology::FaceMatch::hash(const FaceKey& key) {

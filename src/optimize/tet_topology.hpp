@@ -64,11 +64,11 @@ class TetTopology {
   void remove_last_vertex();
   void place_vertex(uint32_t v, const double* x);
 
-  // Vertices on boundary faces (faces of exactly one tet): 1, else 0.
-  std::vector<uint8_t> boundary_vertices() const;
-  // Vertex v is on a boundary face (its link is not closed). Fixed for the
-  // topology's life: replace() keeps a cavity's outer faces, so the
-  // boundary faces never change, and added vertices are interior.
+  // Per vertex: 1 when on a boundary face (a face of exactly one tet, so
+  // its link is not closed), else 0. Fixed for the topology's life:
+  // replace() keeps a cavity's outer faces, so the boundary faces never
+  // change, and added vertices are interior.
+  const std::vector<uint8_t>& boundary_vertices() const { return on_boundary_; }
   bool on_boundary(uint32_t v) const { return on_boundary_[v] != 0; }
 
   // Replaces the alive, distinct tets `old_tets` by `new_tets` (4 vertex
@@ -134,7 +134,7 @@ class TetTopology {
   TetMesh& mesh_;
   std::vector<uint32_t> twin_;         // per face code
   std::vector<uint32_t> vertex_tet_;   // an alive tet having the vertex, or kNone
-  std::vector<uint8_t> on_boundary_;   // see on_boundary
+  std::vector<uint8_t> on_boundary_;   // see boundary_vertices
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
   double measure(uint32_t t) const;
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
