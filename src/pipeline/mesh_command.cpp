@@ -41,6 +41,7 @@
 #include "pipeline/cone_alternative.hpp"
 #include "pipeline/optimize_step.hpp"
 #include "pipeline/pass_alternatives.hpp"
+#include "pipeline/restarts_step.hpp"
 #include "pipeline/partition_step.hpp"
 #include "pipeline/tree_removal_step.hpp"
 #include "pipeline/treeless_step.hpp"
@@ -620,6 +621,10 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
           return try_cone_alternative(s.mesh, optimized, optimize_options(options));
         });
       }
+      if (options.optimize_passes > 0)
+        report.run_step("local restarts", [&] {
+          return root_rank ? local_restarts(s.mesh, optimized, optimize_options(options)) : ojson::object();
+        });
       report.run_step("write mesh", [&] {
         // On P > 1 ranks a .pvtu is written in balanced pieces, one per rank.
         const bool pieces = distributed && file_extension(options.output) == "pvtu";

@@ -1,0 +1,93 @@
+// restart_around_worst (see local_restarts.hpp).
+#include "optimize/local_restarts.hpp"
+
+#include <utility>
+#include <vector>
+
+#include "core/compact_mesh.hpp"
+#include "core/error.hpp"
+#include "optimize/mesh_parts.hpp"
+#include "optimize/tet_quality.hpp"
+
+namespace partet {
+namespace {
+
+// The tet of lowest tet_quality, ties to the lowest index, and its quality.
+std::pair<size_t, double> worst_tet(const TetMesh& mesh) {
+  size_t worst = 0;
+  double lowest = 0;
+  for (size_t t = 0; t < mesh.num_tets(); ++t) {
+    const uint32_t* v = &mesh.tets[4 * t];
+    const double q = tet_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    if (t == 0 || q < lowest) {
+      worst = t;
+      lowest = q;
+    }
+  }
+  return {worst, lowest};
+}
+
+// The whole mesh's measure `whole` with the band's tets measured `before`
+// replaced by tets measured `after`: better when the band's smallest angle
+// rises and neither the share under 10 degrees nor the mean radius ratio
+// gets worse. `whole` becomes the new measure's counts and mean when so.
+bool band_improves(QualityStats& whole, const QualityStats& before, const QualityStats& after) {
+  if (!(after.min_dihedral_deg > before.min_dihedral_deg)) return false;
+  const double tets = static_cast<double>(whole.tets);
+  const double new_tets = tets - static_cast<double>(before.tets) + static_cast<double>(after.tets);
+  const double under = static_cast<double>(whole.dihedral_under_10);
+  const double new_under = under - static_cast<double>(before.dihedral_under_10) +
+                           static_cast<double>(after.dihedral_under_10);
+  if (new_under * tets > under * new_tets) return false;
+  const double sum = whole.radius_ratio_mean * tets;
+  const double new_sum = sum - before.radius_ratio_mean * static_cast<double>(before.tets) +
+                         after.radius_ratio_mean * static_cast<double>(after.tets);
+  if (new_sum * tets < sum * new_tets) return false;
+  whole.tets = whole.tets - before.tets + after.tets;
+  whole.dihedral_under_10 = whole.dihedral_under_10 - before.dihedral_under_10 + after.dihedral_under_10;
+  whole.radius_ratio_mean = new_sum / new_tets;
+  return true;
+}
+
+}  // namespace
+
+RestartStats restart_around_worst(TetMesh& mesh, QualityStats& quality, const OptimizeOptions& options) {
+  PARTET_ASSERT(mesh.global_ids.empty(), "restart_around_worst: a mesh without global ids");
+  RestartStats stats;
+  if (mesh.num_tets() == 0) return stats;
+  OptimizeOptions band_options = options;
+  band_options.passes = options.passes + kRestartExtraPasses;
+  band_options.insert_vertices = false;
+  const double bar = quality_of_angle(kRestartAngle);
+  bool changed = false;
+  for (int round = 0; round < kMaxRestarts; ++round) {
+    const auto [worst, lowest] = worst_tet(mesh);
+    if (!(lowest < bar)) break;
+    bool kept = false;
+    for (const int layers : kRestartLayers) {
+      std::vector<uint8_t> marked(mesh.num_vertices(), 0);
+      for (int k = 0; k < 4; ++k) marked[mesh.tets[4 * worst + static_cast<size_t>(k)]] = 1;
+      const std::vector<uint8_t> band = band_around(mesh, std::move(marked), layers);
+      std::vector<int32_t> part_of_tet(mesh.num_tets(), -1);
+      for (size_t t = 0; t < band.size(); ++t)
+        if (band[t]) part_of_tet[t] = 0;
+      std::vector<MeshPart> parts = split_mesh(mesh, part_of_tet, 1);
+      const QualityStats before = measure_quality(parts[0].mesh);
+      const OptimizeStats after = optimize_mesh(parts[0].mesh, band_options, &parts[0].on_cut);
+      ++stats.tried;
+      if (!band_improves(quality, before, after.after)) continue;
+      join_parts(mesh, part_of_tet, parts);
+      ++stats.kept;
+      kept = changed = true;
+      break;
+    }
+    if (!kept) break;
+  }
+  if (changed) {
+    drop_unused_vertices(mesh);
+    quality = measure_quality(mesh);
+  }
+  return stats;
+}
+
+}  // namespace partet
