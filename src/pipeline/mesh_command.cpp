@@ -9,7 +9,8 @@
 // for the faces they leave, face removals with new vertices (rank 0); a
 // front left after those exits 3 (naming where); --stop-after templates
 // writes the templated core and exits 0. Then quality optimization, on the
-// ranks' parts when P > 1 (optimize_step.hpp).
+// ranks' parts when P > 1 (optimize_step.hpp), its alternatives on small
+// meshes, and restarts on the band around the worst tet (restarts_step.hpp).
 #include "pipeline/mesh_command.hpp"
 
 #include <algorithm>
@@ -41,8 +42,8 @@
 #include "pipeline/cone_alternative.hpp"
 #include "pipeline/optimize_step.hpp"
 #include "pipeline/pass_alternatives.hpp"
-#include "pipeline/restarts_step.hpp"
 #include "pipeline/partition_step.hpp"
+#include "pipeline/restarts_step.hpp"
 #include "pipeline/tree_removal_step.hpp"
 #include "pipeline/treeless_step.hpp"
 #include "pipeline/report.hpp"
