@@ -1,6 +1,8 @@
 // restart_around_worst (see local_restarts.hpp).
 #include "optimize/local_restarts.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <utility>
 #include <vector>
 
@@ -11,6 +13,8 @@
 
 namespace partet {
 namespace {
+
+constexpr int kWidestRestartBand = *std::max_element(std::begin(kRestartLayers), std::end(kRestartLayers));
 
 // The tet of lowest tet_quality, ties to the lowest index, and its quality.
 std::pair<size_t, double> worst_tet(const TetMesh& mesh) {
@@ -63,19 +67,18 @@ RestartStats restart_around_worst(TetMesh& mesh, QualityStats& quality, const Op
   for (int round = 0; round < kMaxRestarts; ++round) {
     const auto [worst, lowest] = worst_tet(mesh);
     if (!(lowest < bar)) break;
+    std::vector<uint8_t> marked(mesh.num_vertices(), 0);
+    for (int k = 0; k < 4; ++k) marked[mesh.tets[4 * worst + static_cast<size_t>(k)]] = 1;
+    const std::vector<int> ring = tet_rings(mesh, std::move(marked), kWidestRestartBand);
     bool kept = false;
     for (const int layers : kRestartLayers) {
-      std::vector<uint8_t> marked(mesh.num_vertices(), 0);
-      for (int k = 0; k < 4; ++k) marked[mesh.tets[4 * worst + static_cast<size_t>(k)]] = 1;
-      const std::vector<uint8_t> band = band_around(mesh, std::move(marked), layers);
       std::vector<int32_t> part_of_tet(mesh.num_tets(), -1);
-      for (size_t t = 0; t < band.size(); ++t)
-        if (band[t]) part_of_tet[t] = 0;
+      for (size_t t = 0; t < ring.size(); ++t)
+        if (ring[t] >= 0 && ring[t] <= layers) part_of_tet[t] = 0;
       std::vector<MeshPart> parts = split_mesh(mesh, part_of_tet, 1);
-      const QualityStats before = measure_quality(parts[0].mesh);
-      const OptimizeStats after = optimize_mesh(parts[0].mesh, band_options, &parts[0].on_cut);
+      const OptimizeStats band = optimize_mesh(parts[0].mesh, band_options, &parts[0].on_cut);
       ++stats.tried;
-      if (!band_improves(quality, before, after.after)) continue;
+      if (!band_improves(quality, band.before, band.after)) continue;
       join_parts(mesh, part_of_tet, parts);
       ++stats.kept;
       kept = changed = true;

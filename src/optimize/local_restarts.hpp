@@ -11,7 +11,10 @@
 // the worst tet's vertices (band_around), cut out as a part whose outer
 // faces stay fixed (mesh_parts.hpp), optimized with options.passes +
 // kRestartExtraPasses passes, lift it (helmet r2: 1.41 -> 4.0 degrees over
-// 989 tets in 20 ms). So, while the worst tet has an angle under
+// 989 tets in 20 ms). The band's optimizer inserts no vertex: with
+// insertion helmet r2's band grew from 989 to 1,711 tets whose mean radius
+// ratio (0.42) lay under the mesh's (0.74), so the mesh's mean fell and no
+// band was kept. So, while the worst tet has an angle under
 // kRestartAngle degrees and for at most kMaxRestarts rounds: the band
 // around it, for each of kRestartLayers in turn, is optimized again, and
 // the first result that makes the whole mesh better replaces the band:

@@ -1,7 +1,9 @@
-// split_mesh, join_parts, cut_vertices and band_around (see mesh_parts.hpp).
+// split_mesh, join_parts, cut_vertices, tet_rings and band_around (see
+// mesh_parts.hpp).
 #include "optimize/mesh_parts.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -96,17 +98,25 @@ std::vector<uint8_t> cut_vertices(const TetMesh& mesh, const std::vector<int32_t
   return cut;
 }
 
-std::vector<uint8_t> band_around(const TetMesh& mesh, std::vector<uint8_t> marked, int layers) {
-  PARTET_ASSERT(marked.size() == mesh.num_vertices(), "band_around: one flag per vertex");
-  std::vector<uint8_t> band(mesh.num_tets(), 0);
+std::vector<int> tet_rings(const TetMesh& mesh, std::vector<uint8_t> marked, int layers) {
+  PARTET_ASSERT(marked.size() == mesh.num_vertices(), "tet_rings: one flag per vertex");
+  std::vector<int> ring(mesh.num_tets(), -1);
   for (int layer = 0;; ++layer) {
     for (size_t t = 0; t < mesh.num_tets(); ++t)
-      for (int i = 0; i < 4 && !band[t]; ++i) band[t] = marked[mesh.tets[4 * t + static_cast<size_t>(i)]];
+      for (int i = 0; i < 4 && ring[t] < 0; ++i)
+        if (marked[mesh.tets[4 * t + static_cast<size_t>(i)]]) ring[t] = layer;
     if (layer == layers) break;
     for (size_t t = 0; t < mesh.num_tets(); ++t)
-      if (band[t])
+      if (ring[t] >= 0)
         for (int i = 0; i < 4; ++i) marked[mesh.tets[4 * t + static_cast<size_t>(i)]] = 1;
   }
+  return ring;
+}
+
+std::vector<uint8_t> band_around(const TetMesh& mesh, std::vector<uint8_t> marked, int layers) {
+  const std::vector<int> ring = tet_rings(mesh, std::move(marked), layers);
+  std::vector<uint8_t> band(ring.size());
+  for (size_t t = 0; t < ring.size(); ++t) band[t] = ring[t] >= 0;
   return band;
 }
 

@@ -42,8 +42,13 @@ std::vector<int32_t> join_parts(TetMesh& mesh, const std::vector<int32_t>& part_
 // in no part (a negative part) count as one more part.
 std::vector<uint8_t> cut_vertices(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet);
 
+// Per tet, its ring around the marked vertices: 0 for a tet with a marked
+// vertex, k for one sharing a vertex with ring k - 1 and in none before,
+// -1 beyond ring `layers`. `marked` has one flag per vertex.
+std::vector<int> tet_rings(const TetMesh& mesh, std::vector<uint8_t> marked, int layers);
+
 // The tets with a marked vertex, grown by `layers` rings of tets (tets
-// sharing a vertex with the band). `marked` has one flag per vertex.
+// sharing a vertex with the band): those of tet_rings at or under `layers`.
 std::vector<uint8_t> band_around(const TetMesh& mesh, std::vector<uint8_t> marked, int layers);
 
 }  // namespace partet

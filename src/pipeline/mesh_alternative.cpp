@@ -7,6 +7,14 @@
 
 namespace partet {
 
+nlohmann::ordered_json quality_counts(const QualityStats& q) {
+  nlohmann::ordered_json c;
+  c["min dihedral"] = q.min_dihedral_deg;
+  c["% under 10 deg"] = q.tets ? 100.0 * static_cast<double>(q.dihedral_under_10) / static_cast<double>(q.tets) : 0.0;
+  c["mean radius ratio"] = q.radius_ratio_mean;
+  return c;
+}
+
 nlohmann::ordered_json keep_better_alternative(TetMesh& mesh, TetMesh candidate, QualityStats& quality,
                                                const OptimizeOptions& options) {
   const OptimizeStats stats = optimize_mesh(candidate, options);
@@ -16,9 +24,7 @@ nlohmann::ordered_json keep_better_alternative(TetMesh& mesh, TetMesh candidate,
   nlohmann::ordered_json c;
   c["passes"] = stats.passes;
   c["tets"] = candidate.num_tets();
-  c["min dihedral"] = q.min_dihedral_deg;
-  c["% under 10 deg"] = 100.0 * static_cast<double>(q.dihedral_under_10) / static_cast<double>(q.tets);
-  c["mean radius ratio"] = q.radius_ratio_mean;
+  c.update(quality_counts(q));
   c["kept"] = kept;
   if (kept) {
     mesh = std::move(candidate);

@@ -16,6 +16,10 @@ namespace partet {
 // `quality`, updated when it is replaced) when better_quality. Returns the
 // report counts: passes, tets, min dihedral, % under 10 deg, mean radius
 // ratio of the candidate, and whether it was kept.
+// The report counts of a measure: min dihedral, % under 10 deg, mean
+// radius ratio.
+nlohmann::ordered_json quality_counts(const QualityStats& q);
+
 nlohmann::ordered_json keep_better_alternative(TetMesh& mesh, TetMesh candidate, QualityStats& quality,
                                                const OptimizeOptions& options);
 

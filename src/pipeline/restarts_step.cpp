@@ -2,6 +2,7 @@
 #include "pipeline/restarts_step.hpp"
 
 #include "optimize/local_restarts.hpp"
+#include "pipeline/mesh_alternative.hpp"
 
 namespace partet {
 
@@ -10,11 +11,7 @@ nlohmann::ordered_json local_restarts(TetMesh& mesh, QualityStats& quality, cons
   nlohmann::ordered_json c;
   c["tried"] = stats.tried;
   c["kept"] = stats.kept;
-  c["min dihedral"] = quality.min_dihedral_deg;
-  c["% under 10 deg"] = quality.tets ? 100.0 * static_cast<double>(quality.dihedral_under_10) /
-                                           static_cast<double>(quality.tets)
-                                     : 0.0;
-  c["mean radius ratio"] = quality.radius_ratio_mean;
+  c.update(quality_counts(quality));
   return c;
 }
 
