@@ -208,7 +208,7 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   double x[3];
   std::copy_n(topo.point(v), 3, x);
   if (!ascend(star, x, scratch)) return false;
-  topo.move_vertex(v, x);
+  topo.move_vertex(v, x, scratch.star);
   return true;
 }
 
@@ -351,7 +351,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
       double trial_sum = 0;
       for (size_t k = 0; k < n; ++k) trial_sum += star.radius_ratio(k, y);
       if (trial_sum > sum && star.positive(y)) {
-        topo.move_vertex(v, y);
+        topo.move_vertex(v, y, scratch.star);
         return true;
       }
     }

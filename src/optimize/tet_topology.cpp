@@ -248,14 +248,18 @@ double TetTopology::measure(uint32_t t) const {
 }
 
 void TetTopology::move_vertex(uint32_t v, const double* x) {
-  std::copy_n(x, 3, &mesh_.xyz[3 * v]);
   vertex_star(v, moved_star_);
+  move_vertex(v, x, moved_star_);
+}
+
+void TetTopology::move_vertex(uint32_t v, const double* x, std::span<const uint32_t> star) {
+  std::copy_n(x, 3, &mesh_.xyz[3 * v]);
   const uint32_t change = next_change();
-  for (uint32_t t : moved_star_) {
+  for (uint32_t t : star) {
     quality_[t] = std::numeric_limits<double>::quiet_NaN();
     for (int k = 0; k < 4; ++k) changed_at_[tet(t)[k]] = change;
   }
-  if (change_log_) change_log_->insert(change_log_->end(), moved_star_.begin(), moved_star_.end());
+  if (change_log_) change_log_->insert(change_log_->end(), star.begin(), star.end());
 }
 
 uint32_t TetTopology::next_stamp() const {

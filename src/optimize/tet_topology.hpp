@@ -48,6 +48,9 @@ class TetTopology {
   const double* point(uint32_t v) const { return &mesh_.xyz[3 * v]; }
   // Moves vertex v to x (the caller checks its tets stay positive).
   void move_vertex(uint32_t v, const double* x);
+  // The same with v's star as vertex_star gives it, which the caller holds
+  // (smoothing has just walked it): the walk is not done again.
+  void move_vertex(uint32_t v, const double* x, std::span<const uint32_t> star);
   // tet_quality of alive tet t, kept per slot until the tet is replaced or
   // one of its vertices moves (half the optimizer's quality evaluations
   // were of tets it had measured before).
