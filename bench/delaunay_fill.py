@@ -136,10 +136,11 @@ def main():
         return np.abs(np.einsum("ij,ij->i", b - a, np.cross(c - a, d - a))).sum() / 6
 
     whole = volume([points[tets[:, k]] for k in range(4)])
-    rr, smallest, ok = quality([q[simplices[kept][:, k]] for k in range(4)])
+    kept_points = [q[simplices[kept][:, k]] for k in range(4)]
+    rr, smallest, ok = quality(kept_points)
     print("input triangles %d, Delaunay %.1f %%" % (len(surface), 100 * (1 - len(missing) / len(surface))))
     print("Delaunay tets %d, removed across the others %d, left inside %d holding %.1f %% of the volume"
-          % (len(simplices), removed.sum(), len(kept), 100 * volume([q[simplices[kept][:, k]] for k in range(4)]) / whole))
+          % (len(simplices), removed.sum(), len(kept), 100 * volume(kept_points) / whole))
     print("tets left: mean radius ratio %.4f, %.2f %% under 10 degrees, %d flat; the mesh read: %d tets"
           % (rr.mean(), 100 * (smallest < 10).mean(), (~ok).sum(), len(tets)))
 

@@ -50,11 +50,9 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   mark_.assign(n, 0);
   quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
   // The tets of every vertex, then, vertex by vertex, the faces having it
-  // as their smallest vertex, sorted by their other two: twins end up side
-  // by side. 16 bytes per tet and a small list per vertex, where sorting
-  // all faces took 64 bytes per tet; each tet is read once per vertex,
-  // where searching each face's twin among the tets of its smallest vertex
-  // read about twenty tets per face.
+  // as their smallest vertex, sorted by their other two, so that twins end
+  // up side by side: 16 bytes per tet and a small list per vertex (sorting
+  // all faces at once took 64 bytes per tet).
   std::vector<uint32_t> first(mesh_.num_vertices() + 1, 0);
   for (uint32_t v : mesh_.tets) ++first[v + 1];
   for (size_t v = 0; v < mesh_.num_vertices(); ++v) first[v + 1] += first[v];
