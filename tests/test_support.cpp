@@ -1,6 +1,7 @@
 // Shared test helpers (see test_support.hpp).
 #include "test_support.hpp"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -15,7 +16,9 @@ namespace partet::test {
 std::string data_path(const std::string& name) { return std::string(PARTET_DATA_DIR) + "/" + name; }
 
 std::string scratch_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("partet_test_" + name);
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::string owner = test ? std::string(test->test_suite_name()) + "." + test->name() + "_" : std::string();
+  auto dir = std::filesystem::temp_directory_path() / ("partet_test_" + owner + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

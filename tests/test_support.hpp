@@ -14,7 +14,9 @@ namespace partet::test {
 // Path of a file in the project's data/ folder.
 std::string data_path(const std::string& name);
 
-// A fresh empty directory for one test (removed and recreated).
+// A fresh empty directory for one test (removed and recreated), named
+// after the running test as well as `name`: ctest runs tests in parallel,
+// and two tests asking for the same name must not share it.
 std::string scratch_dir(const std::string& name);
 
 std::string read_text(const std::string& path);
