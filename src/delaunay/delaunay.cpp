@@ -1,0 +1,273 @@
+// Incremental Delaunay tetrahedralization (see delaunay.hpp).
+#include "delaunay/delaunay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/hash_mix.hpp"
+#include "core/point_text.hpp"
+#include "core/predicates.hpp"
+#include "octree/octree.hpp"
+
+namespace partet {
+namespace {
+
+constexpr uint32_t kDead = UINT32_MAX;
+
+// The insertion order: Morton keys of the points' cells on a 2^21 grid
+// over their bounding box, ties by index.
+std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const double* lo, const double* hi) {
+  const size_t n = xyz.size() / 3;
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+  double scale[3];
+  for (int k = 0; k < 3; ++k) scale[k] = hi[k] > lo[k] ? (kGridSize - 1) / (hi[k] - lo[k]) : 0;
+  for (size_t i = 0; i < n; ++i) {
+    uint32_t g[3];
+    for (int k = 0; k < 3; ++k) g[k] = static_cast<uint32_t>((xyz[3 * i + k] - lo[k]) * scale[k]);
+    keyed[i] = {morton_key(g[0], g[1], g[2]), static_cast<uint32_t>(i)};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<uint32_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = keyed[i].second;
+  return order;
+}
+
+class Builder {
+ public:
+  explicit Builder(const std::vector<double>& xyz) : n_(xyz.size() / 3) {
+    PARTET_ASSERT(n_ + 4 < kDead / 4, "too many points for the Delaunay tetrahedralization");
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    for (size_t i = 0; i < n_; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double x = xyz[3 * i + k];
+        lo[k] = i == 0 ? x : std::min(lo[k], x);
+        hi[k] = i == 0 ? x : std::max(hi[k], x);
+      }
+    order_ = insertion_order(xyz, lo, hi);
+    out_.num_points = n_;
+    out_.xyz = xyz;
+    // Corners of a tet holding the cube of half edge 2 * extent around the
+    // box's centre: {x, y, z >= c - K, (x + y + z) - 3c <= 3K} with K = 4
+    // extent, so every point lies deep inside.
+    double centre[3], extent = 0;
+    for (int k = 0; k < 3; ++k) {
+      centre[k] = 0.5 * (lo[k] + hi[k]);
+      extent = std::max(extent, hi[k] - lo[k]);
+    }
+    const double big = 4 * std::max(extent, 1.0);
+    const double corners[4][3] = {{-big, -big, -big}, {5 * big, -big, -big}, {-big, 5 * big, -big}, {-big, -big, 5 * big}};
+    for (const auto& c : corners)
+      for (int k = 0; k < 3; ++k) out_.xyz.push_back(centre[k] + c[k]);
+    const uint32_t first = static_cast<uint32_t>(n_);
+    new_tet(first, first + 1, first + 2, first + 3);
+    for (int i = 0; i < 4; ++i) nb_[i] = kNoNeighbour;
+  }
+
+  DelaunayTets run() {
+    uint32_t last = 0;
+    for (uint32_t p : order_) last = insert(p, last);
+    compact();
+    return std::move(out_);
+  }
+
+ private:
+  const double* pt(uint32_t v) const { return &out_.xyz[3 * size_t{v}]; }
+  const uint32_t* tet(uint32_t t) const { return &tv_[4 * size_t{t}]; }
+
+  uint32_t new_tet(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    uint32_t t;
+    if (!free_.empty()) {
+      t = free_.back();
+      free_.pop_back();
+    } else {
+      t = static_cast<uint32_t>(tv_.size() / 4);
+      tv_.resize(tv_.size() + 4);
+      nb_.resize(nb_.size() + 4);
+      mark_.push_back(0);
+      conflict_.push_back(0);
+    }
+    uint32_t* v = &tv_[4 * size_t{t}];
+    v[0] = a, v[1] = b, v[2] = c, v[3] = d;
+    return t;
+  }
+
+  // orient3d of tet t with vertex i replaced by p: negative when p lies
+  // strictly beyond face i.
+  int side(uint32_t t, int i, const double* p) const {
+    const double* q[4];
+    for (int k = 0; k < 4; ++k) q[k] = k == i ? p : pt(tet(t)[k]);
+    return orient3d(q[0], q[1], q[2], q[3]);
+  }
+
+  bool contains(uint32_t t, const double* p) const {
+    for (int i = 0; i < 4; ++i)
+      if (side(t, i, p) < 0) return false;
+    return true;
+  }
+
+  uint32_t locate(uint32_t p, uint32_t start) {
+    const double* x = pt(p);
+    uint32_t t = start;
+    const size_t budget = 64 + 4 * (tv_.size() / 4);
+    for (size_t step = 0; step < budget; ++step) {
+      ++out_.walk_steps;
+      rotate_ = (rotate_ + 1) & 3;
+      int beyond = -1;
+      for (int k = 0; k < 4 && beyond < 0; ++k) {
+        const int i = (rotate_ + k) & 3;
+        if (side(t, i, x) < 0) beyond = i;
+      }
+      if (beyond < 0) return t;
+      const uint32_t across = nb_[4 * size_t{t} + beyond];
+      PARTET_ASSERT(across != kNoNeighbour, "a point lies outside the enclosing tet");
+      t = across / 4;
+    }
+    for (uint32_t u = 0; u < tv_.size() / 4; ++u)
+      if (tv_[4 * size_t{u}] != kDead && contains(u, x)) return u;
+    throw InternalError("Delaunay tetrahedralization: no tet holds point " + std::to_string(p));
+  }
+
+  bool in_conflict(uint32_t t, const double* x) const {
+    const uint32_t* v = tet(t);
+    return insphere(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3]), x) > 0;
+  }
+
+  // A face of the cavity's boundary: the cavity tet's vertices with the
+  // index of the face (the vertex the point replaces), and the tet outside.
+  struct BoundaryFace {
+    uint32_t v[4];
+    int i;
+    uint32_t outside;  // 4 u + j, or kNoNeighbour
+  };
+
+  uint32_t insert(uint32_t p, uint32_t start) {
+    const double* x = pt(p);
+    const uint32_t t0 = locate(p, start);
+    if (!in_conflict(t0, x)) {
+      const uint32_t* v = tet(t0);
+      for (int k = 0; k < 4; ++k)
+        if (std::equal(pt(v[k]), pt(v[k]) + 3, x))
+          throw InternalError("Delaunay tetrahedralization: points " + std::to_string(v[k]) + " and " +
+                              std::to_string(p) + " coincide at " + point_text(x));
+      throw InternalError("Delaunay tetrahedralization: the tet holding point " + std::to_string(p) +
+                          " is not in conflict with it");
+    }
+    ++epoch_;
+    cavity_.assign(1, t0);
+    mark_[t0] = epoch_;
+    conflict_[t0] = 1;
+    boundary_.clear();
+    for (size_t c = 0; c < cavity_.size(); ++c) {
+      const uint32_t u = cavity_[c];
+      for (int i = 0; i < 4; ++i) {
+        const uint32_t across = nb_[4 * size_t{u} + i];
+        if (across != kNoNeighbour) {
+          const uint32_t w = across / 4;
+          if (mark_[w] != epoch_) {
+            mark_[w] = epoch_;
+            conflict_[w] = in_conflict(w, x);
+            if (conflict_[w]) cavity_.push_back(w);
+          }
+          if (conflict_[w]) continue;
+        }
+        BoundaryFace f;
+        std::copy(tet(u), tet(u) + 4, f.v);
+        f.i = i;
+        f.outside = across;
+        boundary_.push_back(f);
+      }
+    }
+    out_.cavity_tets += cavity_.size();
+    for (uint32_t u : cavity_) {
+      tv_[4 * size_t{u}] = kDead;
+      free_.push_back(u);
+    }
+    prepare_edges(boundary_.size() * 3 / 2);
+    uint32_t made = 0;
+    for (const BoundaryFace& f : boundary_) {
+      uint32_t v[4] = {f.v[0], f.v[1], f.v[2], f.v[3]};
+      v[f.i] = p;
+      made = new_tet(v[0], v[1], v[2], v[3]);
+      nb_[4 * size_t{made} + f.i] = f.outside;
+      if (f.outside != kNoNeighbour) nb_[f.outside] = 4 * made + f.i;
+      for (int j = 0; j < 4; ++j) {
+        if (j == f.i) continue;
+        uint32_t e[2], m = 0;
+        for (int k = 0; k < 4; ++k)
+          if (k != j && k != f.i) e[m++] = f.v[k];
+        link_edge(std::min(e[0], e[1]), std::max(e[0], e[1]), 4 * made + j);
+      }
+    }
+    return made;
+  }
+
+  // The new tets' faces through the point pair up by their other edge: a
+  // small open-addressing table, emptied by epoch.
+  void prepare_edges(size_t edges) {
+    size_t capacity = 64;
+    while (capacity < 2 * edges) capacity *= 2;
+    if (capacity > edge_key_.size()) {
+      edge_key_.assign(capacity, 0);
+      edge_face_.assign(capacity, 0);
+      edge_epoch_.assign(capacity, 0);
+    }
+  }
+
+  void link_edge(uint32_t a, uint32_t b, uint32_t face) {
+    const uint64_t key = uint64_t{a} << 32 | b;
+    const size_t mask = edge_key_.size() - 1;
+    for (size_t s = hash_mix(key) & mask;; s = (s + 1) & mask) {
+      if (edge_epoch_[s] != epoch_) {
+        edge_epoch_[s] = epoch_;
+        edge_key_[s] = key;
+        edge_face_[s] = face;
+        return;
+      }
+      if (edge_key_[s] == key) {
+        nb_[face] = edge_face_[s];
+        nb_[edge_face_[s]] = face;
+        return;
+      }
+    }
+  }
+
+  void compact() {
+    const size_t slots = tv_.size() / 4;
+    std::vector<uint32_t> index(slots, kDead);
+    uint32_t count = 0;
+    for (size_t t = 0; t < slots; ++t)
+      if (tv_[4 * t] != kDead) index[t] = count++;
+    out_.tets.resize(4 * size_t{count});
+    out_.neighbours.resize(4 * size_t{count});
+    for (size_t t = 0; t < slots; ++t) {
+      if (index[t] == kDead) continue;
+      for (int k = 0; k < 4; ++k) {
+        out_.tets[4 * size_t{index[t]} + k] = tv_[4 * t + k];
+        const uint32_t across = nb_[4 * t + k];
+        out_.neighbours[4 * size_t{index[t]} + k] = across == kNoNeighbour ? kNoNeighbour : 4 * index[across / 4] + across % 4;
+      }
+    }
+  }
+
+  size_t n_;
+  std::vector<uint32_t> order_;
+  DelaunayTets out_;
+  std::vector<uint32_t> tv_, nb_, free_;
+  std::vector<uint32_t> mark_;
+  std::vector<uint8_t> conflict_;
+  uint32_t epoch_ = 0;
+  int rotate_ = 0;
+  std::vector<uint32_t> cavity_;
+  std::vector<BoundaryFace> boundary_;
+  std::vector<uint64_t> edge_key_;
+  std::vector<uint32_t> edge_face_, edge_epoch_;
+};
+
+}  // namespace
+
+DelaunayTets delaunay_tetrahedralize(const std::vector<double>& xyz) { return Builder(xyz).run(); }
+
+}  // namespace partet

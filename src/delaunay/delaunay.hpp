@@ -1,0 +1,60 @@
+// Delaunay tetrahedralization of a point set by incremental insertion
+// (Bowyer-Watson), exact throughout.
+//
+// The points go in in Morton order of their cells on a 2^21 grid over
+// their bounding box (ties by index), into an enclosing tet whose four
+// corners lie far outside the box. Each point is located by a visibility
+// walk from the last tet made (exact orient3d; the face tried first
+// rotates, so the walk cannot cycle on ties; past a step budget the tets
+// are scanned). Its cavity is every tet whose circumsphere holds it
+// strictly (exact insphere), grown by adjacency from the tet holding it.
+// Cospherical points are common here (lattice points of the octree's
+// core); a tie counts as outside, and the cavity is still star-shaped
+// from the point with every boundary face strictly visible: for a face
+// between a tet T in conflict and a tet T' not, the power of the point
+// with respect to T's sphere minus its power with respect to T''s is an
+// affine function that vanishes on the face's plane and is negative on
+// T's side (at T's opposite vertex, which is on T's sphere and outside
+// or on T''s), and at the point it is negative too. So every new tet (the
+// point coned to a boundary face) is positively oriented, no tet is flat,
+// and the result is a Delaunay tetrahedralization (one of them when
+// points are cospherical: the one this insertion order gives).
+// Deterministic: fixed order, fixed tie-breaking.
+//
+// Output: the input points' tets and the enclosing tet's (those using one
+// of its corners, vertex indices n .. n+3), compacted, with adjacency.
+// Distinct points are required; a point equal to an earlier one throws
+// InternalError naming both.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace partet {
+
+constexpr uint32_t kNoNeighbour = UINT32_MAX;
+
+struct DelaunayTets {
+  size_t num_points = 0;      // n: the input points; vertices n .. n+3 are the enclosing tet's corners
+  std::vector<double> xyz;    // 3 per vertex: the input points, then the corners
+  std::vector<uint32_t> tets;  // 4 vertex indices per tet, orient3d > 0
+  // 4 per tet: 4 u + j when face i of tet t (opposite its vertex i) is
+  // face j of tet u; kNoNeighbour on the enclosing tet's faces.
+  std::vector<uint32_t> neighbours;
+  size_t walk_steps = 0;      // tets visited by the point locations
+  size_t cavity_tets = 0;     // tets replaced by the insertions
+
+  size_t num_tets() const { return tets.size() / 4; }
+  bool finite(size_t t) const {
+    for (int k = 0; k < 4; ++k)
+      if (tets[4 * t + k] >= num_points) return false;
+    return true;
+  }
+};
+
+// The Delaunay tetrahedralization of the points `xyz` (3 per point, finite,
+// pairwise distinct).
+DelaunayTets delaunay_tetrahedralize(const std::vector<double>& xyz);
+
+}  // namespace partet
