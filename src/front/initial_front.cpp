@@ -39,8 +39,8 @@ void add_core_faces(const LinearOctree& tree, const TemplateCore& core,
   }
 }
 
-// Front vertices leaf by leaf (the used ones and the free ones): a
-// counting sort by leaf, stable in index.
+}  // namespace
+
 void list_front_vertices(InitialFront& front, size_t leaves) {
   const size_t n = front.vertex_leaf.size();
   std::vector<char> listed(n, 0);
@@ -55,8 +55,6 @@ void list_front_vertices(InitialFront& front, size_t leaves) {
   for (size_t v = 0; v < n; ++v)
     if (listed[v]) front.front_vertices[next[front.vertex_leaf[v]]++] = static_cast<uint32_t>(v);
 }
-
-}  // namespace
 
 uint32_t leaf_of_point(const LinearOctree& tree, const RootCube& root, const double* p) {
   uint32_t g[3];

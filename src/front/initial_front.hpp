@@ -72,6 +72,11 @@ InitialFront make_initial_front(const LinearOctree& tree, const RootCube& root,
 void add_free_vertices(InitialFront& front, const LinearOctree& tree, const std::vector<double>& xyz,
                        const std::vector<uint64_t>& ids, const std::vector<uint32_t>& leaf);
 
+// Lists the front vertices leaf by leaf again (those used by faces and the
+// free ones): a counting sort by leaf, stable in index. For callers that
+// change the faces or the free vertices.
+void list_front_vertices(InitialFront& front, size_t leaves);
+
 // The front as a surface mesh of its faces and the vertices they use (for
 // --front-out), in the front's face order and joint vertex order.
 SurfaceMesh front_surface(const InitialFront& front);

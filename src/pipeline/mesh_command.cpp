@@ -21,6 +21,7 @@
 #include "core/compact_mesh.hpp"
 #include "core/error.hpp"
 #include "core/point_text.hpp"
+#include "front/delaunay_fill.hpp"
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/gap_vertices.hpp"
@@ -77,6 +78,7 @@ ojson options_json(const MeshOptions& o) {
   j["min_core"] = o.min_core;
   j["partitioner"] = bisection_name(o.partitioner);
   j["gap_vertices"] = o.gap_vertices;
+  j["delaunay_fill"] = o.delaunay_fill;
   j["treeless"] = o.treeless;
   j["treeless_on_ranks"] = o.treeless_on_ranks;
   j["optimize"] = o.optimize_passes;
@@ -533,6 +535,23 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       c["gap vertices"] = front.free_vertices;
       return c;
     });
+    if (options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&
+        s.surface.num_triangles() > kDelaunayFillTriangles) {
+      report.run_step("delaunay fill", [&] {
+        if (!s.whole) return ojson::object();
+        const DelaunayFillCounts n = delaunay_fill(s.initial_front, s.tree, s.core.mesh);
+        ojson c;
+        c["delaunay tets"] = n.delaunay_tets;
+        c["missing triangles"] = n.missing_triangles;
+        c["removed tets"] = n.removed_tets;
+        c["kept tets"] = n.kept_tets;
+        c["dropped components"] = n.dropped_components;
+        c["front faces"] = s.initial_front.num_faces();
+        c["free vertices"] = s.initial_front.free_vertices;
+        c["walk steps"] = n.walk_steps;
+        return c;
+      });
+    }
     if (options.stop_after == StopAfter::kTemplates) {
       report.run_step("write core", [&] {
         const TetMesh& core = distributed ? s.part.mesh : s.core.mesh;

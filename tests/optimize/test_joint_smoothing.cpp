@@ -21,12 +21,13 @@
 namespace partet {
 namespace {
 
-// `surface` meshed without optimization and without gap vertices (the
-// front's meshes this was built on, front/gap_vertices.hpp), then
-// optimized with `options`.
+// `surface` meshed without optimization, without gap vertices and without
+// the Delaunay fill (the front's meshes this was built on,
+// front/gap_vertices.hpp, front/delaunay_fill.hpp), then optimized with
+// `options`.
 TetMesh optimized(const std::string& surface, const OptimizeOptions& options, OptimizeStats* stats = nullptr) {
   const std::string out = test::scratch_dir("joint_smoothing_" + surface.substr(surface.find('/') + 1)) + "/mesh.vtu";
-  const auto r = test::run_partet(test::data_path(surface) + " -o " + out + " --no-optimize --no-gap-vertices -q");
+  const auto r = test::run_partet(test::data_path(surface) + " -o " + out + " --no-optimize --no-gap-vertices --no-delaunay-fill -q");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   TetMesh mesh = read_volume_file(out);
   const OptimizeStats s = optimize_mesh(mesh, options);
