@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/hash_mix.hpp"
@@ -17,19 +18,42 @@ namespace {
 
 constexpr uint32_t kDead = UINT32_MAX;
 
-// The insertion order: Morton keys of the points' cells on a 2^21 grid
-// over their bounding box, ties by index.
+// The insertion order, biased randomized (BRIO, Amenta, Choi and Rote):
+// the points shuffled (a fixed xorshift sequence), cut into rounds that
+// double in size up to the last half, each round in Morton order of the
+// points' cells on a 2^21 grid over their bounding box (ties by index).
+// Each round covers the whole body coarsely before the next refines it, so
+// a point's cavity stays small; in one Morton sweep each point lands on the
+// frontier of what is inserted, whose tets reach to the enclosing corners,
+// and femur r1's cavities averaged 30 tets.
 std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const double* lo, const double* hi) {
   const size_t n = xyz.size() / 3;
-  std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+  std::vector<uint32_t> shuffled(n);
+  for (size_t i = 0; i < n; ++i) shuffled[i] = static_cast<uint32_t>(i);
+  uint64_t state = 0x9e3779b97f4a7c15ULL;
+  for (size_t i = n; i > 1; --i) {
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    std::swap(shuffled[i - 1], shuffled[state % i]);
+  }
   double scale[3];
   for (int k = 0; k < 3; ++k) scale[k] = hi[k] > lo[k] ? (kGridSize - 1) / (hi[k] - lo[k]) : 0;
-  for (size_t i = 0; i < n; ++i) {
+  std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
+  for (size_t j = 0; j < n; ++j) {
+    const size_t i = shuffled[j];
     uint32_t g[3];
     for (int k = 0; k < 3; ++k) g[k] = static_cast<uint32_t>((xyz[3 * i + k] - lo[k]) * scale[k]);
-    keyed[i] = {morton_key(g[0], g[1], g[2]), static_cast<uint32_t>(i)};
+    keyed[j] = {morton_key(g[0], g[1], g[2]), static_cast<uint32_t>(i)};
   }
-  std::sort(keyed.begin(), keyed.end());
+  std::vector<size_t> ends;  // round ends, last round first
+  for (size_t m = n; m > 0; m /= 2) {
+    ends.push_back(m);
+    if (m < 64) break;
+  }
+  size_t begin = 0;
+  for (auto e = ends.rbegin(); e != ends.rend(); ++e) {
+    std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin), keyed.begin() + static_cast<std::ptrdiff_t>(*e));
+    begin = *e;
+  }
   std::vector<uint32_t> order(n);
   for (size_t i = 0; i < n; ++i) order[i] = keyed[i].second;
   return order;
@@ -204,22 +228,9 @@ class Builder {
     return made;
   }
 
-  // The new tets' faces through the point pair up by their other edge: a
-  // small open-addressing table, emptied by epoch.
-  void prepare_edges(size_t edges) {
-    size_t capacity = 64;
-    while (capacity < 2 * edges) capacity *= 2;
-    if (capacity > edge_key_.size()) {
-      edge_key_.assign(capacity, 0);
-      edge_face_.assign(capacity, 0);
-      edge_epoch_.assign(capacity, 0);
-    }
-  }
-
   void link_edge(uint32_t a, uint32_t b, uint32_t face) {
     const uint64_t key = uint64_t{a} << 32 | b;
-    const size_t mask = edge_key_.size() - 1;
-    for (size_t s = hash_mix(key) & mask;; s = (s + 1) & mask) {
+    for (size_t s = hash_mix(key) & edge_mask_;; s = (s + 1) & edge_mask_) {
       if (edge_epoch_[s] != epoch_) {
         edge_epoch_[s] = epoch_;
         edge_key_[s] = key;
@@ -232,6 +243,16 @@ class Builder {
         return;
       }
     }
+  }
+  void prepare_edges(size_t edges) {
+    size_t capacity = 64;
+    while (capacity < 2 * edges) capacity *= 2;
+    if (capacity > edge_key_.size()) {
+      edge_key_.assign(capacity, 0);
+      edge_face_.assign(capacity, 0);
+      edge_epoch_.assign(capacity, 0);
+    }
+    edge_mask_ = capacity - 1;
   }
 
   void compact() {
@@ -264,6 +285,7 @@ class Builder {
   std::vector<BoundaryFace> boundary_;
   std::vector<uint64_t> edge_key_;
   std::vector<uint32_t> edge_face_, edge_epoch_;
+  size_t edge_mask_ = 0;
 };
 
 }  // namespace

@@ -1,9 +1,9 @@
 // Delaunay tetrahedralization of a point set by incremental insertion
 // (Bowyer-Watson), exact throughout.
 //
-// The points go in in Morton order of their cells on a 2^21 grid over
-// their bounding box (ties by index), into an enclosing tet whose four
-// corners lie far outside the box. Each point is located by a visibility
+// The points go in in a biased randomized order (rounds doubling in size,
+// each in Morton order; see insertion_order in delaunay.cpp), into an
+// enclosing tet whose four corners lie far outside their bounding box. Each point is located by a visibility
 // walk from the last tet made (exact orient3d; the face tried first
 // rotates, so the walk cannot cycle on ties; past a step budget the tets
 // are scanned). Its cavity is every tet whose circumsphere holds it

@@ -24,6 +24,34 @@ bool segment_meets_tet(const double* const k[4], const double* p, const double* 
   return false;
 }
 
+// True when the points `p` (count n), other than those equal to `skip`,
+// all lie strictly on the outer side of one of the tet's faces (the faces
+// through `skip` only when skip is a tet vertex index, else all): then the
+// triangle meets the tet at most in that vertex. A filter: false says
+// nothing.
+bool outside_one_face(const double* const k[4], const double* const* p, int n, int skip) {
+  for (int f = 0; f < 4; ++f) {
+    if (f == skip) continue;
+    bool all = true;
+    for (int j = 0; j < n && all; ++j) all = orient3d(k[kFace[f][0]], k[kFace[f][1]], k[kFace[f][2]], p[j]) > 0;
+    if (all) return true;
+  }
+  return false;
+}
+
+// True when the tet's vertices other than `skip` (-1: none) all lie
+// strictly on one side of the triangle's plane.
+bool one_side_of_plane(const double* const k[4], const double* const t[3], int skip) {
+  int sides = 0;
+  for (int m = 0; m < 4; ++m)
+    if (m != skip) {
+      const int o = orient3d(t[0], t[1], t[2], k[m]);
+      if (o == 0) return false;
+      sides |= o > 0 ? 1 : 2;
+    }
+  return sides != 3;
+}
+
 }  // namespace
 
 bool tet_meets_triangle_beyond_shared(const double* const tet[4], const uint32_t tet_ids[4],
@@ -38,6 +66,7 @@ bool tet_meets_triangle_beyond_shared(const double* const tet[4], const uint32_t
       }
   if (shared == 3) return false;
   if (shared == 0) {
+    if (outside_one_face(tet, tri, 3, -1) || one_side_of_plane(tet, tri, -1)) return false;
     for (const auto& e : kEdge)
       if (segment_triangle_intersect(tet[e[0]], tet[e[1]], tri[0], tri[1], tri[2])) return true;
     for (int j = 0; j < 3; ++j)
@@ -47,6 +76,8 @@ bool tet_meets_triangle_beyond_shared(const double* const tet[4], const uint32_t
   if (shared == 1) {
     int j = 0;
     while (in_tet[j] < 0) ++j;
+    const double* const others[2] = {tri[(j + 1) % 3], tri[(j + 2) % 3]};
+    if (outside_one_face(tet, others, 2, in_tet[j]) || one_side_of_plane(tet, tri, in_tet[j])) return false;
     const int* f = kFace[in_tet[j]];
     const double* const opposite_face[3] = {tet[f[0]], tet[f[1]], tet[f[2]]};
     if (triangles_intersect(opposite_face, tri)) return true;

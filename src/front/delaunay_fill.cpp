@@ -54,6 +54,7 @@ class Fill {
     const size_t nt = d_.num_tets();
     for (size_t t = 0; t < nt; ++t) counts_.delaunay_tets += d_.finite(t);
     counts_.walk_steps = d_.walk_steps;
+    counts_.cavity_tets = d_.cavity_tets;
     removed_.assign(nt, 0);
     walls_.assign(nt, 0);
     find_walls();

@@ -58,6 +58,7 @@ struct DelaunayFillCounts {
   size_t kept_tets = 0;
   size_t dropped_components = 0;  // components without a wall, or with walls on both sides
   size_t walk_steps = 0;          // tets visited locating the points
+  size_t cavity_tets = 0;         // tets replaced by the insertions
 };
 
 // `front` must come from make_initial_front over `tree` (free vertices

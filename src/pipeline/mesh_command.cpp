@@ -549,6 +549,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
         c["front faces"] = s.initial_front.num_faces();
         c["free vertices"] = s.initial_front.free_vertices;
         c["walk steps"] = n.walk_steps;
+        c["cavity tets"] = n.cavity_tets;
         return c;
       });
     }

@@ -129,16 +129,16 @@ TEST(DelaunayFill, TwoBodiesAndABodyWithACavity) {
 }
 
 // A box's faces, refined, are grids of cocircular points: the Delaunay
-// tetrahedralization takes one diagonal of each square, the input the
-// other or the same. Here (the insertion order breaking every tie the same
-// way) it takes none of the input's, every tet on the surface is removed,
-// the components left have no wall and are dropped, and the removals mesh
-// the whole volume: a valid mesh still.
+// tetrahedralization takes one diagonal of each square as its insertion
+// order breaks the ties, the input the other or the same. Where they
+// differ the input triangles are missing and the tets on them removed
+// (all of them when the order broke every tie against the input, as a
+// plain Morton order did here); the removals close what is left.
 TEST(DelaunayFill, PlanarGridsOfCocircularPointsStillClose) {
   SurfaceMesh box = shifted_box(0, 1);
   for (int round = 0; round < 3; ++round) box = refine_midpoints(box);
-  const DelaunayFillCounts n = fill_and_close(front_case_of(build_surface(box, "box")), "box", false);
-  EXPECT_EQ(n.missing_triangles, box.num_triangles());
+  const DelaunayFillCounts n = fill_and_close(front_case_of(build_surface(box, "box")), "box");
+  EXPECT_GT(n.missing_triangles, 0u);
 }
 
 TEST(DelaunayFill, SameInputSameFill) {
