@@ -41,6 +41,8 @@
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/cone_alternative.hpp"
+#include "pipeline/fill_step.hpp"
+#include "pipeline/run_json.hpp"
 #include "pipeline/optimize_step.hpp"
 #include "pipeline/pass_alternatives.hpp"
 #include "pipeline/partition_step.hpp"
@@ -56,50 +58,6 @@
 namespace partet {
 
 namespace {
-
-const char* stop_name(StopAfter s) {
-  switch (s) {
-    case StopAfter::kSurface: return "surface";
-    case StopAfter::kTemplates: return "templates";
-    case StopAfter::kNone: break;
-  }
-  return "none";
-}
-
-ojson options_json(const MeshOptions& o) {
-  ojson j;
-  j["input"] = o.input;
-  j["output"] = o.output;
-  j["stop_after"] = stop_name(o.stop_after);
-  j["max_size"] = o.max_size;
-  j["size_factor"] = o.size_factor;
-  j["max_level"] = o.max_level;
-  j["too_close"] = o.too_close;
-  j["min_core"] = o.min_core;
-  j["partitioner"] = bisection_name(o.partitioner);
-  j["gap_vertices"] = o.gap_vertices;
-  j["delaunay_fill"] = o.delaunay_fill;
-  j["treeless"] = o.treeless;
-  j["treeless_on_ranks"] = o.treeless_on_ranks;
-  j["optimize"] = o.optimize_passes;
-  j["quality_target"] = o.quality_target;
-  j["ascii"] = o.ascii;
-  if (!o.front_out.empty()) j["front_out"] = o.front_out;
-  return j;
-}
-
-ojson summary_json(const SurfaceSummary& s) {
-  ojson j;
-  j["triangles"] = s.triangles;
-  j["vertices"] = s.vertices;
-  j["shells"] = s.shells;
-  j["cavities"] = s.cavities;
-  j["reoriented"] = s.reoriented;
-  j["volume"] = s.volume;
-  j["unused_vertices"] = s.unused_vertices;
-  j["self_intersection_check_s"] = s.seconds_self_intersections;
-  return j;
-}
 
 // Everything one rank holds between steps.
 struct MeshState {
@@ -538,19 +496,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
     if (options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&
         s.surface.num_triangles() > kDelaunayFillTriangles) {
       report.run_step("delaunay fill", [&] {
-        if (!s.whole) return ojson::object();
-        const DelaunayFillCounts n = delaunay_fill(s.initial_front, s.tree, s.core.mesh);
-        ojson c;
-        c["delaunay tets"] = n.delaunay_tets;
-        c["missing triangles"] = n.missing_triangles;
-        c["removed tets"] = n.removed_tets;
-        c["kept tets"] = n.kept_tets;
-        c["dropped components"] = n.dropped_components;
-        c["front faces"] = s.initial_front.num_faces();
-        c["free vertices"] = s.initial_front.free_vertices;
-        c["walk steps"] = n.walk_steps;
-        c["cavity tets"] = n.cavity_tets;
-        return c;
+        return s.whole ? fill_step(s.initial_front, s.tree, s.core.mesh) : ojson::object();
       });
     }
     if (options.stop_after == StopAfter::kTemplates) {
