@@ -255,22 +255,30 @@ class Builder {
     edge_mask_ = capacity - 1;
   }
 
+  // The alive slots moved down in place (a slot only ever moves to a lower
+  // one) and handed over: no second copy of the tets at the peak (the
+  // capacity left is the few slots freed last).
   void compact() {
     const size_t slots = tv_.size() / 4;
     std::vector<uint32_t> index(slots, kDead);
     uint32_t count = 0;
     for (size_t t = 0; t < slots; ++t)
       if (tv_[4 * t] != kDead) index[t] = count++;
-    out_.tets.resize(4 * size_t{count});
-    out_.neighbours.resize(4 * size_t{count});
+    std::vector<uint32_t>().swap(mark_);
+    std::vector<uint8_t>().swap(conflict_);
+    std::vector<uint32_t>().swap(free_);
     for (size_t t = 0; t < slots; ++t) {
       if (index[t] == kDead) continue;
       for (int k = 0; k < 4; ++k) {
-        out_.tets[4 * size_t{index[t]} + k] = tv_[4 * t + k];
+        tv_[4 * size_t{index[t]} + k] = tv_[4 * t + k];
         const uint32_t across = nb_[4 * t + k];
-        out_.neighbours[4 * size_t{index[t]} + k] = across == kNoNeighbour ? kNoNeighbour : 4 * index[across / 4] + across % 4;
+        nb_[4 * size_t{index[t]} + k] = across == kNoNeighbour ? kNoNeighbour : 4 * index[across / 4] + across % 4;
       }
     }
+    tv_.resize(4 * size_t{count});
+    nb_.resize(4 * size_t{count});
+    out_.tets = std::move(tv_);
+    out_.neighbours = std::move(nb_);
   }
 
   size_t n_;

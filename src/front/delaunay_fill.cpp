@@ -33,16 +33,22 @@ Triple sorted(uint32_t a, uint32_t b, uint32_t c) {
   return {a, b, c};
 }
 
-// The finite tets around each vertex, compressed.
+// The tets around each vertex of [lo, hi) (the surface's), compressed.
 struct VertexTets {
+  uint32_t lo;
   std::vector<uint32_t> first, tets;
-  VertexTets(const DelaunayTets& d) : first(d.num_points + 5, 0) {
-    for (uint32_t v : d.tets) ++first[v + 1];
+  VertexTets(const DelaunayTets& d, uint32_t lo, uint32_t hi) : lo(lo), first(hi - lo + 1, 0) {
+    auto in = [&](uint32_t v) { return v >= lo && v < hi; };
+    for (uint32_t v : d.tets)
+      if (in(v)) ++first[v - lo + 1];
     for (size_t v = 0; v + 1 < first.size(); ++v) first[v + 1] += first[v];
-    tets.resize(d.tets.size());
+    tets.resize(first.back());
     std::vector<uint32_t> next(first.begin(), first.end() - 1);
-    for (size_t i = 0; i < d.tets.size(); ++i) tets[next[d.tets[i]]++] = static_cast<uint32_t>(i / 4);
+    for (size_t i = 0; i < d.tets.size(); ++i)
+      if (in(d.tets[i])) tets[next[d.tets[i] - lo]++] = static_cast<uint32_t>(i / 4);
   }
+  const uint32_t* begin(uint32_t v) const { return tets.data() + first[v - lo]; }
+  const uint32_t* end(uint32_t v) const { return tets.data() + first[v - lo + 1]; }
 };
 
 class Fill {
@@ -50,6 +56,7 @@ class Fill {
   Fill(InitialFront& front, TetMesh& mesh) : front_(front), mesh_(mesh) {}
 
   DelaunayFillCounts run(size_t leaves) {
+    surface_vertices_ = front_.xyz.size() / 3 - front_.core_vertices - front_.free_vertices;
     d_ = delaunay_tetrahedralize(front_.xyz);
     const size_t nt = d_.num_tets();
     for (size_t t = 0; t < nt; ++t) counts_.delaunay_tets += d_.finite(t);
@@ -72,7 +79,7 @@ class Fill {
   // tet on the material side recorded; the others are listed as missing.
   void find_walls() {
     const uint32_t lo = static_cast<uint32_t>(front_.core_vertices);
-    const uint32_t hi = lo + static_cast<uint32_t>(surface_vertices());
+    const uint32_t hi = lo + static_cast<uint32_t>(surface_vertices_);
     auto on_surface = [&](uint32_t v) { return v >= lo && v < hi; };
     FlatHashMap<Triple, uint32_t, TripleTraits> faces;
     faces.reserve(front_.surface_faces * 2);
@@ -103,9 +110,6 @@ class Fill {
     counts_.missing_triangles = missing_.size();
   }
 
-  // Before rebuild: the vertices between the core's and the free ones.
-  size_t surface_vertices() const { return front_.xyz.size() / 3 - front_.core_vertices - front_.free_vertices; }
-
   bool meets(uint32_t t, const uint32_t* tri) const {
     const uint32_t* v = &d_.tets[4 * size_t{t}];
     const double* tp[4] = {pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3])};
@@ -114,7 +118,8 @@ class Fill {
   }
 
   void remove_across_missing() {
-    const VertexTets around(d_);
+    const uint32_t lo = static_cast<uint32_t>(front_.core_vertices);
+    const VertexTets around(d_, lo, lo + static_cast<uint32_t>(surface_vertices_));
     std::vector<uint32_t> seen(d_.num_tets(), UINT32_MAX), queue;
     for (uint32_t s : missing_) {
       const uint32_t* tri = &front_.faces[3 * size_t{s}];
@@ -125,7 +130,7 @@ class Fill {
         if (meets(t, tri)) queue.push_back(t);
       };
       for (int k = 0; k < 3; ++k)
-        for (uint32_t i = around.first[tri[k]]; i < around.first[tri[k] + 1]; ++i) visit(around.tets[i]);
+        for (const uint32_t* t = around.begin(tri[k]); t != around.end(tri[k]); ++t) visit(*t);
       for (size_t q = 0; q < queue.size(); ++q) {
         const uint32_t t = queue[q];
         if (!removed_[t]) ++counts_.removed_tets;
@@ -239,6 +244,7 @@ class Fill {
   TetMesh& mesh_;
   DelaunayTets d_;
   DelaunayFillCounts counts_;
+  size_t surface_vertices_ = 0;  // between the core's vertices and the free ones
   std::vector<uint8_t> removed_, walls_, kept_;
   std::vector<uint32_t> missing_;   // input triangles (front face indices) that are not Delaunay faces
   std::vector<uint32_t> inner_of_;  // per input triangle: 4 t + i of its face on the material side, or kNoNeighbour

@@ -125,7 +125,9 @@ TEST(TetTriangleContact, NeverMissesASampledContact) {
     ++tried;
     const bool sampled = sampled_meet(k, t, shared, 24);
     met += sampled;
-    if (sampled) EXPECT_TRUE(tet_meets_triangle_beyond_shared(k, kid, t, tid)) << "round " << round;
+    if (sampled) {
+      EXPECT_TRUE(tet_meets_triangle_beyond_shared(k, kid, t, tid)) << "round " << round;
+    }
   }
   EXPECT_GT(tried, 1000u);
   EXPECT_GT(met, 100u);

@@ -50,7 +50,9 @@ void expect_clear_of_the_surface(const TetMesh& kept, const SurfaceMesh& surface
       }
       for (int k = 0; k < 3 && !apart; ++k)
         apart = std::max({q[0][k], q[1][k], q[2][k]}) < lo[k] || std::min({q[0][k], q[1][k], q[2][k]}) > hi[k];
-      if (!apart) ASSERT_FALSE(tet_meets_triangle_beyond_shared(p, v, q, ids)) << name << " tet " << t << " triangle " << s;
+      if (!apart) {
+        ASSERT_FALSE(tet_meets_triangle_beyond_shared(p, v, q, ids)) << name << " tet " << t << " triangle " << s;
+      }
     }
   }
 }
