@@ -73,9 +73,10 @@ class Builder {
     order_ = insertion_order(xyz, lo, hi);
     out_.num_points = n_;
     out_.xyz = xyz;
-    // Corners of a tet holding the cube of half edge 2 * extent around the
-    // box's centre: {x, y, z >= c - K, (x + y + z) - 3c <= 3K} with K = 4
-    // extent, so every point lies deep inside.
+    // Corners of the tet {x, y, z >= c - K, (x + y + z) - 3c <= 3K} around
+    // the box's centre c, K = 4 extent: it holds the cube of half edge K
+    // (whose corner c + (K, K, K) lies on its slanted face), so every
+    // point, within half an extent of c, lies deep inside.
     double centre[3], extent = 0;
     for (int k = 0; k < 3; ++k) {
       centre[k] = 0.5 * (lo[k] + hi[k]);

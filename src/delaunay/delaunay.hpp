@@ -3,22 +3,25 @@
 //
 // The points go in in a biased randomized order (rounds doubling in size,
 // each in Morton order; see insertion_order in delaunay.cpp), into an
-// enclosing tet whose four corners lie far outside their bounding box. Each point is located by a visibility
-// walk from the last tet made (exact orient3d; the face tried first
-// rotates, so the walk cannot cycle on ties; past a step budget the tets
-// are scanned). Its cavity is every tet whose circumsphere holds it
-// strictly (exact insphere), grown by adjacency from the tet holding it.
-// Cospherical points are common here (lattice points of the octree's
-// core); a tie counts as outside, and the cavity is still star-shaped
-// from the point with every boundary face strictly visible: for a face
-// between a tet T in conflict and a tet T' not, the power of the point
-// with respect to T's sphere minus its power with respect to T''s is an
-// affine function that vanishes on the face's plane and is negative on
-// T's side (at T's opposite vertex, which is on T's sphere and outside
-// or on T''s), and at the point it is negative too. So every new tet (the
-// point coned to a boundary face) is positively oriented, no tet is flat,
-// and the result is a Delaunay tetrahedralization (one of them when
-// points are cospherical: the one this insertion order gives).
+// enclosing tet whose four corners lie far outside their bounding box.
+// Each point is located by a visibility walk from the last tet made
+// (exact orient3d; the face tried first rotates from step to step; past a
+// step budget, which a Delaunay tetrahedralization's acyclic walks do not
+// reach, the tets are scanned). Its cavity is every tet whose circumsphere
+// holds it strictly (exact insphere), grown by adjacency from the tet
+// holding it. Cospherical points are common here (lattice points of the
+// octree's core); a tie counts as outside, and the cavity is still
+// star-shaped from the point with every boundary face strictly visible:
+// for a face between a tet T in conflict and a tet T' not, the point's
+// power with respect to T's sphere minus its power with respect to T''s
+// is an affine function vanishing on the face's plane. At the point it is
+// negative. At T's opposite vertex it is at most 0 (the vertex is on T's
+// sphere, on or outside T''s), and not 0: the function would then vanish
+// everywhere, the spheres would be one, and the point inside T's would be
+// inside T''s. So the point lies strictly on T's side of the face: every
+// new tet (the point coned to a boundary face) is positively oriented, no
+// tet is flat, and the result is a Delaunay tetrahedralization (one of
+// them when points are cospherical: the one this insertion order gives).
 // Deterministic: fixed order, fixed tie-breaking.
 //
 // Output: the input points' tets and the enclosing tet's (those using one
