@@ -1,13 +1,17 @@
 // The pipeline of src/pipeline/mesh_command.cpp up to the templates
-// (Built) and on to the initial front with gap vertices (FrontCase), on
-// one rank, for the front's tests.
+// (Built), on to the initial front with gap vertices (FrontCase) and the
+// removals that close it (close_front), on one rank, for the front's
+// tests.
 #pragma once
 
 #include <string>
 #include <utility>
 
+#include "front/face_removal.hpp"
+#include "front/front.hpp"
 #include "front/gap_vertices.hpp"
 #include "front/initial_front.hpp"
+#include "front/treeless_removal.hpp"
 #include "io/mesh_file.hpp"
 #include "octree/balance.hpp"
 #include "octree/build.hpp"
@@ -61,5 +65,18 @@ inline FrontCase front_case_of(Built built) {
 }
 
 inline FrontCase front_case(const std::string& name) { return front_case_of(build(name)); }
+
+// c.initial closed by the removals as the pipeline runs them on one rank
+// (tree-supported, free vertices dropped, tree-less); `out` holds the tets
+// made before (the core's or the Delaunay fill's) and gets theirs. The
+// faces left.
+inline size_t close_front(FrontCase& c, TetMesh& out) {
+  Front front(c.initial, c.b.tree, c.b.root);
+  RemovalMemo memo;
+  remove_faces_tree_supported(front, c.b.tree, c.b.root, out, {}, nullptr, &memo);
+  drop_free_vertices(front, c.b.tree);
+  memo.renumber(front.compact());
+  return remove_faces_treeless(front, c.b.tree, c.b.root, out, {}, &memo).faces_left;
+}
 
 }  // namespace partet::test

@@ -16,9 +16,6 @@
 #include "core/predicates.hpp"
 #include "delaunay/tet_triangle_contact.hpp"
 #include "front/delaunay_fill.hpp"
-#include "front/face_removal.hpp"
-#include "front/front.hpp"
-#include "front/treeless_removal.hpp"
 #include "front_case.hpp"
 #include "surface/midpoint_refine.hpp"
 #include "test_support.hpp"
@@ -79,13 +76,7 @@ DelaunayFillCounts fill_and_close(FrontCase c, const std::string& name, bool kee
   EXPECT_EQ(mesh.xyz, c.initial.xyz) << name;
   expect_clear_of_the_surface(mesh, c.b.surface, c.initial.core_vertices, name);
   expect_closed(c.initial, name);
-  Front front(c.initial, c.b.tree, c.b.root);
-  RemovalMemo memo;
-  remove_faces_tree_supported(front, c.b.tree, c.b.root, mesh, {}, nullptr, &memo);
-  drop_free_vertices(front, c.b.tree);
-  memo.renumber(front.compact());
-  const TreelessCounts left = remove_faces_treeless(front, c.b.tree, c.b.root, mesh, {}, &memo);
-  EXPECT_EQ(left.faces_left, 0u) << name;
+  EXPECT_EQ(close_front(c, mesh), 0u) << name;
   mesh.tris = c.b.surface.tris;
   for (uint32_t& v : mesh.tris) v += static_cast<uint32_t>(c.initial.core_vertices);
   mesh.global_ids = {};
