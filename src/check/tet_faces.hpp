@@ -1,8 +1,8 @@
 // Face matching of a tet mesh: groups the 4 faces of every tet by their
 // sorted vertex triple and checks each group. Face code 4*t + f names the
-// face of tet t opposite its local vertex f; kOutwardFace[f] lists that
-// face's local vertices so that, for a positive tet, its normal points away
-// from the tet.
+// face of tet t opposite its local vertex f; kOutwardFace[f]
+// (core/tet_mesh.hpp) lists that face's local vertices so that, for a
+// positive tet, its normal points away from the tet.
 // Faces are bucketed by their smallest vertex (a counting sort into one
 // flat array) and sorted within each bucket on the other two vertices
 // packed in 64 bits: memory is one uint32 per face, time near-linear.
@@ -27,8 +27,6 @@ enum class TetState : int8_t {
   kNonFinite,   // a vertex has a NaN or infinite coordinate
   kOutOfRange,  // a vertex index is out of range
 };
-
-inline constexpr int kOutwardFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 // The mesh vertices of face `code`, outward oriented.
 inline void outward_face(const TetMesh& mesh, uint32_t code, uint32_t out[3]) {

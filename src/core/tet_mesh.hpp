@@ -8,6 +8,11 @@
 
 namespace partet {
 
+// The face of a tet opposite its local vertex f, as the local vertices
+// kOutwardFace[f]: for a positive tet the face's normal (b-a)x(c-a) points
+// away from the tet.
+inline constexpr int kOutwardFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 struct TetMesh {
   std::vector<double> xyz;           // 3 coordinates per vertex
   std::vector<uint32_t> tets;        // 4 vertex indices per tet

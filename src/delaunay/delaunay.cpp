@@ -83,7 +83,8 @@ class Builder {
       extent = std::max(extent, hi[k] - lo[k]);
     }
     const double big = 4 * std::max(extent, 1.0);
-    const double corners[4][3] = {{-big, -big, -big}, {5 * big, -big, -big}, {-big, 5 * big, -big}, {-big, -big, 5 * big}};
+    const double corners[4][3] = {
+        {-big, -big, -big}, {5 * big, -big, -big}, {-big, 5 * big, -big}, {-big, -big, 5 * big}};
     for (const auto& c : corners)
       for (int k = 0; k < 3; ++k) out_.xyz.push_back(centre[k] + c[k]);
     const uint32_t first = static_cast<uint32_t>(n_);

@@ -3,15 +3,15 @@
 
 #include "core/intersections.hpp"
 #include "core/predicates.hpp"
+#include "core/tet_mesh.hpp"
 
 namespace partet {
 namespace {
 
-constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 bool point_in_tet(const double* const k[4], const double* p) {
-  for (const auto& f : kFace)
+  for (const auto& f : kOutwardFace)
     if (orient3d(k[f[0]], k[f[1]], k[f[2]], p) > 0) return false;
   return true;
 }
@@ -19,7 +19,7 @@ bool point_in_tet(const double* const k[4], const double* p) {
 // The closed segment pq meets the closed tet.
 bool segment_meets_tet(const double* const k[4], const double* p, const double* q) {
   if (point_in_tet(k, p) || point_in_tet(k, q)) return true;
-  for (const auto& f : kFace)
+  for (const auto& f : kOutwardFace)
     if (segment_triangle_intersect(p, q, k[f[0]], k[f[1]], k[f[2]])) return true;
   return false;
 }
@@ -33,7 +33,8 @@ bool outside_one_face(const double* const k[4], const double* const* p, int n, i
   for (int f = 0; f < 4; ++f) {
     if (f == skip) continue;
     bool all = true;
-    for (int j = 0; j < n && all; ++j) all = orient3d(k[kFace[f][0]], k[kFace[f][1]], k[kFace[f][2]], p[j]) > 0;
+    const int* face = kOutwardFace[f];
+    for (int j = 0; j < n && all; ++j) all = orient3d(k[face[0]], k[face[1]], k[face[2]], p[j]) > 0;
     if (all) return true;
   }
   return false;
@@ -78,7 +79,7 @@ bool tet_meets_triangle_beyond_shared(const double* const tet[4], const uint32_t
     while (in_tet[j] < 0) ++j;
     const double* const others[2] = {tri[(j + 1) % 3], tri[(j + 2) % 3]};
     if (outside_one_face(tet, others, 2, in_tet[j]) || one_side_of_plane(tet, tri, in_tet[j])) return false;
-    const int* f = kFace[in_tet[j]];
+    const int* f = kOutwardFace[in_tet[j]];
     const double* const opposite_face[3] = {tet[f[0]], tet[f[1]], tet[f[2]]};
     if (triangles_intersect(opposite_face, tri)) return true;
     return segment_meets_tet(tet, tri[(j + 1) % 3], tri[(j + 2) % 3]);

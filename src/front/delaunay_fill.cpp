@@ -8,14 +8,13 @@
 #include "core/flat_hash_map.hpp"
 #include "core/hash_mix.hpp"
 #include "core/predicates.hpp"
+#include "core/tet_mesh.hpp"
 #include "delaunay/delaunay.hpp"
 #include "delaunay/tet_triangle_contact.hpp"
 
 namespace partet {
 namespace {
 
-// Face i of a positively oriented tet, oriented away from it.
-constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 struct Triple {
   uint32_t a, b, c;
@@ -86,7 +85,7 @@ class Fill {
     for (size_t t = 0; t < d_.num_tets(); ++t) {
       const uint32_t* v = &d_.tets[4 * t];
       for (int i = 0; i < 4; ++i) {
-        const uint32_t a = v[kFace[i][0]], b = v[kFace[i][1]], c = v[kFace[i][2]];
+        const uint32_t a = v[kOutwardFace[i][0]], b = v[kOutwardFace[i][1]], c = v[kOutwardFace[i][2]];
         if (on_surface(a) && on_surface(b) && on_surface(c))
           faces.get_or_insert(sorted(a, b, c), static_cast<uint32_t>(4 * t + i));
       }
@@ -204,7 +203,7 @@ class Fill {
       for (int i = 0; i < 4; ++i) {
         const uint32_t across = d_.neighbours[4 * t + i];
         if ((walls_[t] >> i & 1) || (across != kNoNeighbour && kept_[across / 4])) continue;
-        faces.insert(faces.end(), {v[kFace[i][0]], v[kFace[i][1]], v[kFace[i][2]]});
+        faces.insert(faces.end(), {v[kOutwardFace[i][0]], v[kOutwardFace[i][1]], v[kOutwardFace[i][2]]});
       }
     }
     // Gap vertices: the used ones keep their order, the free ones follow.
