@@ -6,31 +6,14 @@
 
 #include "core/error.hpp"
 #include "core/flat_hash_map.hpp"
-#include "core/hash_mix.hpp"
 #include "core/predicates.hpp"
 #include "core/tet_mesh.hpp"
+#include "core/vertex_triple.hpp"
 #include "delaunay/delaunay.hpp"
 #include "delaunay/tet_triangle_contact.hpp"
 
 namespace partet {
 namespace {
-
-
-struct Triple {
-  uint32_t a, b, c;
-  bool operator==(const Triple& o) const { return a == o.a && b == o.b && c == o.c; }
-};
-struct TripleTraits {
-  static Triple empty() { return {UINT32_MAX, UINT32_MAX, UINT32_MAX}; }
-  static uint64_t hash(const Triple& k) { return hash_triple(k.a, k.b, k.c); }
-};
-
-Triple sorted(uint32_t a, uint32_t b, uint32_t c) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
-  return {a, b, c};
-}
 
 // The tets around each vertex of [lo, hi) (the surface's), compressed.
 struct VertexTets {
@@ -80,20 +63,20 @@ class Fill {
     const uint32_t lo = static_cast<uint32_t>(front_.core_vertices);
     const uint32_t hi = lo + static_cast<uint32_t>(surface_vertices_);
     auto on_surface = [&](uint32_t v) { return v >= lo && v < hi; };
-    FlatHashMap<Triple, uint32_t, TripleTraits> faces;
+    FlatHashMap<VertexTriple, uint32_t, VertexTripleTraits> faces;
     faces.reserve(front_.surface_faces * 2);
     for (size_t t = 0; t < d_.num_tets(); ++t) {
       const uint32_t* v = &d_.tets[4 * t];
       for (int i = 0; i < 4; ++i) {
         const uint32_t a = v[kOutwardFace[i][0]], b = v[kOutwardFace[i][1]], c = v[kOutwardFace[i][2]];
         if (on_surface(a) && on_surface(b) && on_surface(c))
-          faces.get_or_insert(sorted(a, b, c), static_cast<uint32_t>(4 * t + i));
+          faces.get_or_insert(sorted_triple(a, b, c), static_cast<uint32_t>(4 * t + i));
       }
     }
     inner_of_.assign(front_.surface_faces, kNoNeighbour);
     for (size_t s = 0; s < front_.surface_faces; ++s) {
       const uint32_t* f = &front_.faces[3 * s];
-      const uint32_t* found = faces.find(sorted(f[0], f[1], f[2]));
+      const uint32_t* found = faces.find(sorted_triple(f[0], f[1], f[2]));
       if (!found) {
         missing_.push_back(static_cast<uint32_t>(s));
         continue;

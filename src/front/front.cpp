@@ -13,12 +13,6 @@ namespace partet {
 
 namespace {
 
-void sort3(uint32_t& a, uint32_t& b, uint32_t& c) {
-  if (a > b) std::swap(a, b);
-  if (b > c) std::swap(b, c);
-  if (a > b) std::swap(a, b);
-}
-
 uint64_t edge_key(uint32_t a, uint32_t b) {
   if (a > b) std::swap(a, b);
   return (uint64_t{a} << 32) | b;
@@ -36,13 +30,6 @@ float float_above(double x) {
 }
 
 }  // namespace
-
-uint64_t Front::TripleTraits::hash(const Triple& k) { return hash_triple(k.a, k.b, k.c); }
-
-Front::Triple Front::sorted_triple(uint32_t a, uint32_t b, uint32_t c) {
-  sort3(a, b, c);
-  return {a, b, c};
-}
 
 uint64_t Front::EdgeTraits::hash(uint64_t k) { return hash_mix(k); }
 

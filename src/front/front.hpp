@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "core/flat_hash_map.hpp"
+#include "core/vertex_triple.hpp"
 #include "front/initial_front.hpp"
 #include "octree/octree.hpp"
 #include "octree/range_query.hpp"
@@ -268,22 +269,11 @@ class Front {
   std::vector<uint64_t> leaf_changed_;
   uint64_t changes_ = 0;
 
-  // A sorted vertex triple (compared field by field: std::array's == is a
-  // memcmp call, 4 % of the run in the hash probes).
-  struct Triple {
-    uint32_t a, b, c;
-    bool operator==(const Triple& o) const { return a == o.a && b == o.b && c == o.c; }
-  };
-  struct TripleTraits {
-    static Triple empty() { return {kNoIndex, kNoIndex, kNoIndex}; }
-    static uint64_t hash(const Triple& k);
-  };
   struct EdgeTraits {
     static uint64_t empty() { return UINT64_MAX; }
     static uint64_t hash(uint64_t k);
   };
-  static Triple sorted_triple(uint32_t a, uint32_t b, uint32_t c);
-  FlatHashMap<Triple, uint32_t, TripleTraits> face_of_triple_;
+  FlatHashMap<VertexTriple, uint32_t, VertexTripleTraits> face_of_triple_;
   // Per front edge: its alive faces, counted and combined by exclusive or.
   struct EdgeFaces {
     uint32_t uses = 0;
