@@ -11,7 +11,7 @@
 #include "core/hash_mix.hpp"
 #include "core/point_text.hpp"
 #include "core/predicates.hpp"
-#include "octree/octree.hpp"
+#include "octree/box_morton.hpp"
 
 namespace partet {
 namespace {
@@ -26,7 +26,7 @@ constexpr uint32_t kDead = UINT32_MAX;
 // a point's cavity stays small; in one Morton sweep each point lands on the
 // frontier of what is inserted, whose tets reach to the enclosing corners,
 // and femur r1's cavities averaged 30 tets.
-std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const double* lo, const double* hi) {
+std::vector<uint32_t> insertion_order(const std::vector<double>& xyz) {
   const size_t n = xyz.size() / 3;
   std::vector<uint32_t> shuffled(n);
   for (size_t i = 0; i < n; ++i) shuffled[i] = static_cast<uint32_t>(i);
@@ -35,14 +35,11 @@ std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const doub
     state ^= state << 13, state ^= state >> 7, state ^= state << 17;
     std::swap(shuffled[i - 1], shuffled[state % i]);
   }
-  double scale[3];
-  for (int k = 0; k < 3; ++k) scale[k] = hi[k] > lo[k] ? (kGridSize - 1) / (hi[k] - lo[k]) : 0;
+  const BoxMorton grid(xyz);
   std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
   for (size_t j = 0; j < n; ++j) {
     const size_t i = shuffled[j];
-    uint32_t g[3];
-    for (int k = 0; k < 3; ++k) g[k] = static_cast<uint32_t>((xyz[3 * i + k] - lo[k]) * scale[k]);
-    keyed[j] = {morton_key(g[0], g[1], g[2]), static_cast<uint32_t>(i)};
+    keyed[j] = {grid.key(&xyz[3 * i]), static_cast<uint32_t>(i)};
   }
   std::vector<size_t> ends;  // round ends, last round first
   for (size_t m = n; m > 0; m /= 2) {
@@ -70,7 +67,7 @@ class Builder {
         lo[k] = i == 0 ? x : std::min(lo[k], x);
         hi[k] = i == 0 ? x : std::max(hi[k], x);
       }
-    order_ = insertion_order(xyz, lo, hi);
+    order_ = insertion_order(xyz);
     out_.num_points = n_;
     out_.xyz = xyz;
     // Corners of the tet {x, y, z >= c - K, (x + y + z) - 3c <= 3K} around
