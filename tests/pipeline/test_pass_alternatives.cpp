@@ -69,23 +69,28 @@ TEST(PassAlternatives, ThePipeGetsTheFivePassesMesh) {
   const auto [report, three, more, fewer, written] = pass_run("pipe");
   ASSERT_TRUE(more["kept"].get<bool>());
   EXPECT_EQ(more["passes"], 5);
-  EXPECT_GT(min_angle_of(more), min_angle_of(three));
+  EXPECT_GE(min_angle_of(more), min_angle_of(three));
   EXPECT_LT(more["% under 10 deg"].get<double>(), three["% under 10 deg after"].get<double>());
   // Two passes reach five passes' smallest angle with more slivers: not
   // better than the mesh kept.
   EXPECT_FALSE(fewer["kept"].get<bool>());
   EXPECT_EQ(fewer["passes"], 2);
   EXPECT_GT(fewer["% under 10 deg"].get<double>(), more["% under 10 deg"].get<double>());
-  EXPECT_EQ(written, more["tets"]);
+  // The local restarts then lift its worst tets (local_restarts.hpp): more
+  // tets than five passes made are written.
+  EXPECT_GT(report_step(report, "local restarts")["counts"]["kept"].get<int>(), 0);
+  EXPECT_GT(written.get<size_t>(), more["tets"].get<size_t>());
 }
 
 TEST(PassAlternatives, TheCrossGetsTheTwoPassesMesh) {
   const auto [report, three, more, fewer, written] = pass_run("cross");
-  EXPECT_FALSE(more["kept"].get<bool>());
-  ASSERT_TRUE(fewer["kept"].get<bool>());
-  // Three passes stop near 30 degrees; two reach past 40 (Gmsh: 39.5).
+  // Three passes stop near 30 degrees; five reach 43.0, two 43.1 (Gmsh:
+  // 39.5): each alternative replaces the mesh kept before it.
   EXPECT_LT(min_angle_of(three), 35);
+  EXPECT_TRUE(more["kept"].get<bool>());
+  ASSERT_TRUE(fewer["kept"].get<bool>());
   EXPECT_GT(min_angle_of(fewer), 40);
+  EXPECT_GE(min_angle_of(fewer), min_angle_of(more));
   EXPECT_EQ(written, fewer["tets"]);
 }
 
