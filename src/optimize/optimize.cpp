@@ -552,7 +552,8 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;
       part = Stopwatch();
-      const double pass_target = std::min(target, quality_of_angle(later_pass_angle(pass)));
+      const double pass_target =
+          options.lower_later_targets ? std::min(target, quality_of_angle(later_pass_angle(pass))) : target;
       const size_t flips = topology_pass(topo, pass_target, stats, failed_flips);
       stats.topology_seconds += part.wall();
       part = Stopwatch();

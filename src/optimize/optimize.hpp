@@ -40,6 +40,9 @@ struct OptimizeOptions {
   // Tets whose dihedral angles all lie in [target, 180 - target] degrees
   // are left as they are; the optimizer works on the others.
   double quality_target_deg = 40;
+  // Passes after the first work on the tets under lower angles
+  // (optimize.cpp, kLaterPassAngles); false: every pass at the target.
+  bool lower_later_targets = true;
   bool insert_vertices = true;  // appends vertices to xyz (and global_ids)
   bool collapse_vertices = true;  // leaves collapsed vertices unused in xyz
   // In the worst-tet rounds, when nothing else moves the worst tet, smooth
