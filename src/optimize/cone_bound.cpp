@@ -1,7 +1,7 @@
 // cone_quality_bound, cones_can_beat and cones_can_keep_angle (see
 // cone_bound.hpp): per cavity tet its four outward unit face normals, per
 // edge the outer faces counted, and at the edges with two the tets'
-// dihedral angles there summed.
+// dihedral angles there summed (in cavity order).
 #include "optimize/cone_bound.hpp"
 
 #include <algorithm>
@@ -10,20 +10,28 @@
 #include <numbers>
 #include <vector>
 
+#include "core/hash_mix.hpp"
 #include "optimize/tet_edges.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
 namespace {
 
-// One (cavity tet, edge) incidence: the edge's sorted vertex pair, the
-// tet's index in the cavity, the local edge, and how many of the tet's two
-// faces at the edge are outer faces of the cavity.
+// One (cavity tet, edge) incidence: the tet's index in the cavity, the
+// local edge, and the next incidence on the same edge (kNoIncidence last).
+constexpr uint32_t kNoIncidence = UINT32_MAX;
 struct Incidence {
-  uint64_t key;
   uint32_t tet;
+  uint32_t next;
   uint8_t edge;
-  uint8_t outer;
+};
+
+// One edge of the cavity: its sorted vertex pair, how many outer faces of
+// the cavity meet there (over its incidences), and its incidences' list.
+struct CavityEdge {
+  uint64_t key;
+  uint32_t first, last;
+  int outer;
 };
 
 // The outward unit normals of the four faces of tet v, face k opposite
@@ -47,18 +55,50 @@ void outward_normals(const TetTopology& topo, const uint32_t* v, double* n) {
   }
 }
 
-// The cavity's tets' outward normals (12 doubles per tet) and its
-// (tet, edge) incidences sorted by edge.
+// The cavity's tets' outward normals (12 doubles per tet), its
+// (tet, edge) incidences in cavity order, and its edges in the order first
+// met, each with its incidences in cavity order (found through an open
+// addressing table whose slots are stamped per cavity, so nothing is
+// cleared between cavities).
 struct CavityEdges {
   std::vector<double> normals;
   std::vector<Incidence> incidences;
+  std::vector<CavityEdge> edges;
+  std::vector<uint32_t> members;  // the cavity's slots, sorted
+  std::vector<uint32_t> table, stamps;  // per table slot: index into edges, and the cavity it was set for
+  uint32_t stamp = 0;
+
+  uint32_t edge_index(uint64_t key) {
+    const size_t mask = table.size() - 1;
+    for (size_t s = hash_mix(key) & mask;; s = (s + 1) & mask) {
+      if (stamps[s] != stamp) {
+        stamps[s] = stamp;
+        table[s] = static_cast<uint32_t>(edges.size());
+        edges.push_back({key, kNoIncidence, kNoIncidence, 0});
+        return table[s];
+      }
+      if (edges[table[s]].key == key) return table[s];
+    }
+  }
 };
 
 void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, CavityEdges& out) {
-  std::vector<uint32_t> members(cavity.begin(), cavity.end());
-  std::sort(members.begin(), members.end());
+  out.members.assign(cavity.begin(), cavity.end());
+  std::sort(out.members.begin(), out.members.end());
   out.normals.resize(12 * cavity.size());
   out.incidences.clear();
+  out.edges.clear();
+  size_t capacity = 64;
+  while (capacity < 12 * cavity.size()) capacity *= 2;
+  if (out.table.size() < capacity) {
+    out.table.assign(capacity, 0);
+    out.stamps.assign(capacity, 0);
+    out.stamp = 0;
+  }
+  if (++out.stamp == 0) {
+    std::fill(out.stamps.begin(), out.stamps.end(), 0);
+    out.stamp = 1;
+  }
   for (uint32_t i = 0; i < cavity.size(); ++i) {
     const uint32_t t = cavity[i];
     const uint32_t* v = topo.tet(t);
@@ -66,17 +106,21 @@ void cavity_edges(const TetTopology& topo, std::span<const uint32_t> cavity, Cav
     bool outer[4];
     for (int f = 0; f < 4; ++f) {
       const uint32_t other = topo.twin(4 * t + f);
-      outer[f] = other == TetTopology::kNone || !std::binary_search(members.begin(), members.end(), other / 4);
+      outer[f] = other == TetTopology::kNone || !std::binary_search(out.members.begin(), out.members.end(), other / 4);
     }
     for (uint8_t e = 0; e < 6; ++e) {
       const uint32_t x = v[kTetEdges[e][0]], y = v[kTetEdges[e][1]];
-      const uint64_t key = (uint64_t{std::min(x, y)} << 32) | std::max(x, y);
-      const int outer_faces = int{outer[kTetEdgeFaces[e][0]]} + int{outer[kTetEdgeFaces[e][1]]};
-      out.incidences.push_back({key, i, e, static_cast<uint8_t>(outer_faces)});
+      CavityEdge& edge = out.edges[out.edge_index((uint64_t{std::min(x, y)} << 32) | std::max(x, y))];
+      edge.outer += int{outer[kTetEdgeFaces[e][0]]} + int{outer[kTetEdgeFaces[e][1]]};
+      const uint32_t index = static_cast<uint32_t>(out.incidences.size());
+      out.incidences.push_back({i, kNoIncidence, e});
+      if (edge.first == kNoIncidence)
+        edge.first = index;
+      else
+        out.incidences[edge.last].next = index;
+      edge.last = index;
     }
   }
-  std::sort(out.incidences.begin(), out.incidences.end(),
-            [](const Incidence& x, const Incidence& y) { return x.key != y.key ? x.key < y.key : x.tet < y.tet; });
 }
 
 // The interior dihedral angle of the incidence's tet at its edge as the
@@ -97,23 +141,17 @@ void unit_angle(const CavityEdges& edges, const Incidence& in, double& c, double
 // meet; stops when it returns false.
 template <class Edge>
 void for_each_two_face_edge(const CavityEdges& edges, Edge&& edge) {
-  const std::vector<Incidence>& in = edges.incidences;
-  for (size_t i = 0; i < in.size();) {
-    size_t j = i;
-    int outer = 0;
-    for (; j < in.size() && in[j].key == in[i].key; ++j) outer += in[j].outer;
-    if (outer == 2) {
-      double c = 1, s = 0;
-      for (size_t k = i; k < j; ++k) {
-        double ck, sk;
-        unit_angle(edges, in[k], ck, sk);
-        const double nc = c * ck - s * sk, ns = c * sk + s * ck;
-        c = nc;
-        s = ns;
-      }
-      if (!edge(c, s)) return;
+  for (const CavityEdge& e : edges.edges) {
+    if (e.outer != 2) continue;
+    double c = 1, s = 0;
+    for (uint32_t k = e.first; k != kNoIncidence; k = edges.incidences[k].next) {
+      double ck, sk;
+      unit_angle(edges, edges.incidences[k], ck, sk);
+      const double nc = c * ck - s * sk, ns = c * sk + s * ck;
+      c = nc;
+      s = ns;
     }
-    i = j;
+    if (!edge(c, s)) return;
   }
 }
 
