@@ -108,13 +108,57 @@ bool grow(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, in
   return true;
 }
 
+// The new tets (d, e, a, b) of one multi_face_removal, by ring edge (a, b):
+// each growth keeps all but one of the ring's edges, so each tet's quality
+// is computed once and its exact orientation at most once.
+class NewTets {
+ public:
+  NewTets(const TetTopology& topo, uint32_t d, uint32_t e) : topo_(topo), d_(d), e_(e) {}
+
+  // quality_above(d, e, a, b, floor).
+  double quality_above(uint32_t a, uint32_t b, double floor) {
+    Entry& x = entry(a, b);
+    if (!(x.quality > floor)) return kInvalid;
+    if (x.orientation == kUnknown) {
+      const bool positive = orient3d(topo_.point(d_), topo_.point(e_), topo_.point(a), topo_.point(b)) > 0;
+      x.orientation = positive ? kPositive : kNotPositive;
+    }
+    return x.orientation == kPositive ? x.quality : kInvalid;
+  }
+
+ private:
+  static constexpr int kUnknown = 0, kPositive = 1, kNotPositive = 2;
+  struct Entry {
+    uint64_t key;
+    double quality;
+    int orientation;
+  };
+  // The entry of tet (d, e, a, b); past kMaxEntries (more than the growth
+  // of a ring to kMaxRing can make) the last slot is reused.
+  Entry& entry(uint32_t a, uint32_t b) {
+    const uint64_t key = uint64_t{a} << 32 | b;
+    for (int i = 0; i < count_; ++i)
+      if (entries_[i].key == key) return entries_[i];
+    if (count_ < kMaxEntries) ++count_;
+    Entry& x = entries_[count_ - 1];
+    x = {key, tet_quality(topo_.point(d_), topo_.point(e_), topo_.point(a), topo_.point(b)), kUnknown};
+    return x;
+  }
+
+  static constexpr int kMaxEntries = 4 * TetTopology::kMaxRing * TetTopology::kMaxRing;
+  const TetTopology& topo_;
+  uint32_t d_, e_;
+  int count_ = 0;
+  Entry entries_[kMaxEntries];
+};
+
 // Worst new tet (d, e, r_i, r_{i+1}) of `s`, or kInvalid unless all are
 // positive; once it is at or below `floor` the search stops there (the
 // value returned is then at most `floor`).
-double sandwich_quality(const TetTopology& topo, uint32_t d, uint32_t e, const Sandwich& s, double floor) {
+double sandwich_quality(NewTets& tets, const Sandwich& s, double floor) {
   double worst = std::numeric_limits<double>::infinity();
   for (int i = 0; i < s.n && worst > floor; ++i)
-    worst = std::min(worst, quality_above(topo, d, e, s.ring[i], s.ring[(i + 1) % s.n], floor));
+    worst = std::min(worst, tets.quality_above(s.ring[i], s.ring[(i + 1) % s.n], floor));
   return worst;
 }
 
@@ -152,6 +196,7 @@ bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, cons
   s.old_count = 2;
   double old_quality = std::min(topo.quality(t1), topo.quality(t2));
   bool found = false;
+  NewTets new_tets(topo, d, e);
   while (s.n < TetTopology::kMaxRing) {
     // The growth giving the best new tets (the first on ties).
     Sandwich best_growth, candidate;
@@ -159,7 +204,7 @@ bool multi_face_removal(const TetTopology& topo, uint32_t code, Flip& flip, cons
     bool grown = false;
     for (int i = 0; i < s.n; ++i) {
       if (!grow(topo, d, e, s, i, candidate)) continue;
-      const double q = sandwich_quality(topo, d, e, candidate, grown ? best_growth_quality : kInvalid);
+      const double q = sandwich_quality(new_tets, candidate, grown ? best_growth_quality : kInvalid);
       if (!grown || q > best_growth_quality) {
         best_growth = candidate;
         best_growth_quality = q;
