@@ -148,31 +148,6 @@ void integer_differences(const double* const* points, int origin, int q,
   }
 }
 
-int insphere_exact(const double* const* p) {
-  const ExponentRange range = exponent_range(p, 5, 3);
-  if (range.high == INT_MIN) return 0;
-  int shift;
-  if (window_shift(range, kInsphereWindow, shift)) {
-    double s[5][3];
-    scaled_copy(p, shift, s);
-    // Expansions only when every difference is a double: with two-component
-    // differences the worst-case expansions would not fit on the stack.
-    Expansion<1> rows[4][3];
-    bool exact_differences = true;
-    for (int i = 0; i < 4 && exact_differences; ++i) {
-      for (int k = 0; k < 3; ++k) {
-        const Expansion<2> diff = exact::exact_difference(s[i][k], s[4][k]);
-        if (diff.n == 2) exact_differences = false;
-        rows[i][k] = exact::exact_value(diff.n == 0 ? 0.0 : diff.c[diff.n - 1]);
-      }
-    }
-    if (exact_differences) return insphere_formula(rows[0], rows[1], rows[2], rows[3]).sign();
-  }
-  BigInt<34> rows[4][3];
-  integer_differences<5, 3>(p, 4, range.low, rows);
-  return insphere_formula(rows[0], rows[1], rows[2], rows[3]).sign();
-}
-
 // Coordinates that are integers below 2^kSmallIntegerBits in units of
 // 2^low (lattice points such as the templated core's, whose coplanar
 // quadruples are common) take 128-bit integer arithmetic: differences
@@ -195,6 +170,51 @@ int orient3d_small_integers(const double* const* p, int low) {
                      u[1] * (Int128{v[2]} * w[0] - Int128{v[0]} * w[2]) +
                      u[2] * (Int128{v[0]} * w[1] - Int128{v[1]} * w[0]);
   return (det > 0) - (det < 0);
+}
+
+// Insphere on coordinates that are integers below 2^kInsphereSmallBits in
+// units of 2^low (the core's lattice points, cospherical in bulk at the
+// octree's 2:1 transitions, where the Delaunay fill's ties take this path
+// by the thousand): differences below 2^24, the lifts below 2^49.6, the
+// 3x3 determinants below 2^74.6, the determinant below 2^126.2, all in
+// 128-bit integers.
+constexpr int kInsphereSmallBits = 23;
+
+int insphere_small_integers(const double* const* p, int low) {
+  int64_t m[5][3];
+  for (int i = 0; i < 5; ++i)
+    for (int k = 0; k < 3; ++k) m[i][k] = static_cast<int64_t>(scale_by_power_of_two(p[i][k], -low));
+  Int128 rows[4][3];
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) rows[i][k] = m[i][k] - m[4][k];
+  const Int128 det = insphere_formula(rows[0], rows[1], rows[2], rows[3]);
+  return (det > 0) - (det < 0);
+}
+
+int insphere_exact(const double* const* p) {
+  const ExponentRange range = exponent_range(p, 5, 3);
+  if (range.high == INT_MIN) return 0;
+  if (range.high - range.low <= kInsphereSmallBits) return insphere_small_integers(p, range.low);
+  int shift;
+  if (window_shift(range, kInsphereWindow, shift)) {
+    double s[5][3];
+    scaled_copy(p, shift, s);
+    // Expansions only when every difference is a double: with two-component
+    // differences the worst-case expansions would not fit on the stack.
+    Expansion<1> rows[4][3];
+    bool exact_differences = true;
+    for (int i = 0; i < 4 && exact_differences; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        const Expansion<2> diff = exact::exact_difference(s[i][k], s[4][k]);
+        if (diff.n == 2) exact_differences = false;
+        rows[i][k] = exact::exact_value(diff.n == 0 ? 0.0 : diff.c[diff.n - 1]);
+      }
+    }
+    if (exact_differences) return insphere_formula(rows[0], rows[1], rows[2], rows[3]).sign();
+  }
+  BigInt<34> rows[4][3];
+  integer_differences<5, 3>(p, 4, range.low, rows);
+  return insphere_formula(rows[0], rows[1], rows[2], rows[3]).sign();
 }
 
 // The first N coordinates of p and q are equal.

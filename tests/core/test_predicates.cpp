@@ -582,6 +582,38 @@ TEST(Predicates, InsphereRandomNearCospherical) {
   }
 }
 
+TEST(Predicates, InsphereLatticeIntegers) {
+  // Integers below 2^23 in units of 2^k (the 128-bit path's widest case)
+  // and 2^24 (past it), cospherical or off by one unit: the sphere through
+  // (+-x, +-y, +-z) about a centre holds every sign pattern of them.
+  std::mt19937_64 rng(23);
+  for (const int bits : {23, 24}) {
+    const int64_t top = int64_t{1} << (bits - 2);
+    std::uniform_int_distribution<int64_t> v(-top, top);
+    std::uniform_int_distribution<int> nudge(-1, 1), pattern(0, 7);
+    int zeros = 0;
+    for (int n = 0; n < 3000; ++n) {
+      const int64_t centre[3] = {v(rng), v(rng), v(rng)}, r[3] = {v(rng) / 2, v(rng) / 2, v(rng) / 2};
+      double p[5][3];
+      for (int i = 0; i < 5; ++i) {
+        const int signs = pattern(rng);
+        for (int c = 0; c < 3; ++c)
+          p[i][c] = static_cast<double>(centre[c] + ((signs >> c & 1) ? r[c] : -r[c]) + (i == 4 ? nudge(rng) : 0));
+      }
+      const int expected = ref_insphere(p[0], p[1], p[2], p[3], p[4]);
+      zeros += expected == 0;
+      for (int k : {-40, 0, 30}) {
+        double s[5][3];
+        for (int i = 0; i < 5; ++i)
+          for (int c = 0; c < 3; ++c) s[i][c] = std::ldexp(p[i][c], k);
+        ASSERT_EQ(insphere(s[0], s[1], s[2], s[3], s[4]), expected) << n << " k=" << k;
+        ASSERT_EQ(insphere(s[1], s[0], s[2], s[3], s[4]), -expected) << n << " k=" << k;
+      }
+    }
+    EXPECT_GT(zeros, 100) << bits;
+  }
+}
+
 TEST(Predicates, InsphereExtremeExponents) {
   std::mt19937_64 rng(19);
   std::uniform_int_distribution<int> v(-100, 100);
