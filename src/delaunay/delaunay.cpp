@@ -134,6 +134,7 @@ class Builder {
   uint32_t locate(uint32_t p, uint32_t start) {
     const double* x = pt(p);
     uint32_t t = start;
+    int entered = -1;  // the face of t the walk came in through: x lies strictly on t's side of it
     const size_t budget = 64 + 4 * (tv_.size() / 4);
     for (size_t step = 0; step < budget; ++step) {
       ++out_.walk_steps;
@@ -141,12 +142,13 @@ class Builder {
       int beyond = -1;
       for (int k = 0; k < 4 && beyond < 0; ++k) {
         const int i = (rotate_ + k) & 3;
-        if (side(t, i, x) < 0) beyond = i;
+        if (i != entered && side(t, i, x) < 0) beyond = i;
       }
       if (beyond < 0) return t;
       const uint32_t across = nb_[4 * size_t{t} + beyond];
       PARTET_ASSERT(across != kNoNeighbour, "a point lies outside the enclosing tet");
       t = across / 4;
+      entered = static_cast<int>(across % 4);
     }
     for (uint32_t u = 0; u < tv_.size() / 4; ++u)
       if (tv_[4 * size_t{u}] != kDead && contains(u, x)) return u;
