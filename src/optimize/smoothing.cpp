@@ -313,18 +313,19 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     worst = std::min(worst, q);
     slivers += q < sliver;
   }
-  // The trials test the star's tets worst first: those are the likeliest
-  // to drop below the worst (the verdict does not depend on the order).
+  // The trials test the star's two worst tets first: those are the
+  // likeliest to drop below the worst (the verdict does not depend on the
+  // order; a full sort cost 1.5 % of a run).
   std::vector<size_t>& order = scratch.order;
   order.resize(n);
   std::iota(order.begin(), order.end(), size_t{0});
-  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) {
-    const double qi = topo.quality(scratch.star[i]), qj = topo.quality(scratch.star[j]);
-    return qi != qj ? qi < qj : i < j;
-  });
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(std::min<size_t>(2, n)), order.end(),
+                    [&](size_t i, size_t j) {
+                      const double qi = topo.quality(scratch.star[i]), qj = topo.quality(scratch.star[j]);
+                      return qi != qj ? qi < qj : i < j;
+                    });
   const double* x = topo.point(v);
-  // The star's radius ratio sum at x, taken when a trial first needs it
-  // (most vertices fail every trial on the qualities).
+  // The star's radius ratio sum at x, taken when a trial first needs it.
   double sum = -1;
   double odt[3];
   const bool has_odt = odt_point(topo, scratch.star, odt);

@@ -33,7 +33,7 @@ struct SmoothingScratch {
   std::vector<double> trial;     // per star tet, at a trial point
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
-  std::vector<size_t> order;     // star tets, worst first (relax_vertex)
+  std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)
   std::vector<uint32_t> neighbours;  // after relax_vertex(v): v's neighbours, each once
 };
 
