@@ -41,7 +41,7 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
   double old_sum = 0;
   for (uint32_t c : s.cavity) {
     s.old_tets.insert(s.old_tets.end(), topo.tet(c), topo.tet(c) + 4);
-    old_sum += radius_ratio_of(topo, topo.tet(c));
+    old_sum += topo.radius_ratio(c);
   }
   const AngleSummary before = summarize_angles(topo, s.old_tets);
   // Where the ring's angle at an outer edge is under twice its smallest, no
@@ -81,7 +81,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
   size_t tets = 0;
   for (uint32_t t = 0; t < topo.slots(); ++t) {
     if (!topo.alive(t)) continue;
-    const double r = radius_ratio_of(topo, topo.tet(t));
+    const double r = topo.radius_ratio(t);
     sum += r;
     ++tets;
     if (r < bar) needles.emplace_back(r, t);
@@ -96,7 +96,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
     made.clear();
     for (const auto& [ratio, t] : needles) {
       // A slot may have been refilled by a split since the list was made.
-      if (!topo.alive(t) || radius_ratio_of(topo, topo.tet(t)) >= bar) continue;
+      if (!topo.alive(t) || topo.radius_ratio(t) >= bar) continue;
       const uint32_t* v = topo.tet(t);
       int longest = 0;
       double length = -1;
@@ -117,7 +117,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
     needles.clear();
     for (uint32_t t : made) {
       if (!topo.alive(t)) continue;
-      const double r = radius_ratio_of(topo, topo.tet(t));
+      const double r = topo.radius_ratio(t);
       if (r < bar) needles.emplace_back(r, t);
     }
   }

@@ -196,7 +196,7 @@ size_t multi_face_pass(TetTopology& topo, double target, OptimizeStats& stats) {
   size_t tets = 0;
   for (uint32_t t = 0; t < topo.slots(); ++t)
     if (topo.alive(t)) {
-      sum += radius_ratio_of(topo, topo.tet(t));
+      sum += topo.radius_ratio(t);
       ++tets;
     }
   const double mean = sum / static_cast<double>(tets);
@@ -213,7 +213,7 @@ size_t multi_face_pass(TetTopology& topo, double target, OptimizeStats& stats) {
       double gain = 0;
       int old_slivers = 0, new_slivers = 0;
       for (int i = 0; i < candidate.old_count; ++i) {
-        gain -= radius_ratio_of(topo, topo.tet(candidate.old_tets[i]));
+        gain -= topo.radius_ratio(candidate.old_tets[i]);
         old_slivers += topo.quality(candidate.old_tets[i]) < ten;
       }
       for (int i = 0; i < candidate.new_count; ++i) {
@@ -267,7 +267,7 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
                         SmoothingScratch& scratch) {
   std::vector<uint32_t> low;
   for (uint32_t t = 0; t < topo.slots(); ++t)
-    if (topo.alive(t) && radius_ratio_of(topo, topo.tet(t)) < kRelaxBelow) low.push_back(t);
+    if (topo.alive(t) && topo.radius_ratio(t) < kRelaxBelow) low.push_back(t);
   const std::vector<uint32_t> vertices = free_vertices_of(topo, low, frozen);
   settled.resize(topo.num_vertices(), 0);
   size_t moved = 0;

@@ -347,7 +347,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
       if (!keeps || trial_slivers > slivers) continue;
       if (sum < 0) {
         sum = 0;
-        for (size_t k = 0; k < n; ++k) sum += star.radius_ratio(k, x);
+        for (size_t k = 0; k < n; ++k) sum += topo.radius_ratio(scratch.star[k]);
       }
       double trial_sum = 0;
       for (size_t k = 0; k < n; ++k) trial_sum += star.radius_ratio(k, y);

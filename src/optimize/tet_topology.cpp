@@ -49,6 +49,7 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   changed_at_.assign(mesh_.num_vertices(), 0);
   mark_.assign(n, 0);
   quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
+  radius_ratio_.assign(n, std::numeric_limits<double>::quiet_NaN());
   // The tets of every vertex, then, vertex by vertex, the faces having it
   // as their smallest vertex, sorted by their other two, so that twins end
   // up side by side: 16 bytes per tet and a small list per vertex (sorting
@@ -187,6 +188,7 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
       twin_.resize(twin_.size() + 4, kNone);
       mark_.push_back(0);
       quality_.push_back(0);
+      radius_ratio_.push_back(0);
     } else {
       t = free_slots_.back();
       free_slots_.pop_back();
@@ -194,6 +196,7 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
     created.push_back(t);
     if (change_log_) change_log_->push_back(t);
     quality_[t] = std::numeric_limits<double>::quiet_NaN();
+    radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
     std::copy_n(&new_tets[4 * i], 4, &mesh_.tets[4 * t]);
     for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
     for (int f = 0; f < 4; ++f) {
@@ -240,6 +243,8 @@ bool TetTopology::edge_ring(uint32_t t, int i, int j, Ring& ring) const {
   return true;
 }
 
+double TetTopology::measure_radius_ratio(uint32_t t) const { return radius_ratio_of(*this, tet(t)); }
+
 double TetTopology::measure(uint32_t t) const {
   const uint32_t* v = tet(t);
   return tet_quality(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
@@ -255,6 +260,7 @@ void TetTopology::move_vertex(uint32_t v, const double* x, std::span<const uint3
   const uint32_t change = next_change();
   for (uint32_t t : star) {
     quality_[t] = std::numeric_limits<double>::quiet_NaN();
+    radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
     for (int k = 0; k < 4; ++k) changed_at_[tet(t)[k]] = change;
   }
   if (change_log_) change_log_->insert(change_log_->end(), star.begin(), star.end());
@@ -317,6 +323,7 @@ void TetTopology::compact() {
   free_slots_.clear();
   mark_.clear();
   quality_.clear();
+  radius_ratio_.clear();
 }
 
 }  // namespace partet
