@@ -26,7 +26,7 @@ constexpr uint32_t kDead = UINT32_MAX;
 // a point's cavity stays small; in one Morton sweep each point lands on the
 // frontier of what is inserted, whose tets reach to the enclosing corners,
 // and femur r1's cavities averaged 30 tets.
-std::vector<uint32_t> insertion_order(const std::vector<double>& xyz) {
+std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const BoxMorton& grid) {
   const size_t n = xyz.size() / 3;
   std::vector<uint32_t> shuffled(n);
   for (size_t i = 0; i < n; ++i) shuffled[i] = static_cast<uint32_t>(i);
@@ -35,7 +35,6 @@ std::vector<uint32_t> insertion_order(const std::vector<double>& xyz) {
     state ^= state << 13, state ^= state >> 7, state ^= state << 17;
     std::swap(shuffled[i - 1], shuffled[state % i]);
   }
-  const BoxMorton grid(xyz);
   std::vector<std::pair<uint64_t, uint32_t>> keyed(n);
   for (size_t j = 0; j < n; ++j) {
     const size_t i = shuffled[j];
@@ -60,14 +59,9 @@ class Builder {
  public:
   explicit Builder(const std::vector<double>& xyz) : n_(xyz.size() / 3) {
     PARTET_ASSERT(n_ + 4 < kDead / 4, "too many points for the Delaunay tetrahedralization");
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-    for (size_t i = 0; i < n_; ++i)
-      for (int k = 0; k < 3; ++k) {
-        const double x = xyz[3 * i + k];
-        lo[k] = i == 0 ? x : std::min(lo[k], x);
-        hi[k] = i == 0 ? x : std::max(hi[k], x);
-      }
-    order_ = insertion_order(xyz);
+    const BoxMorton grid(xyz);
+    const double *lo = grid.lo(), *hi = grid.hi();
+    order_ = insertion_order(xyz, grid);
     out_.num_points = n_;
     out_.xyz = xyz;
     // Corners of the tet {x, y, z >= c - K, (x + y + z) - 3c <= 3K} around

@@ -16,15 +16,17 @@ class BoxMorton {
  public:
   // The bounding box of the points `xyz` (3 per point; none: the unit box).
   explicit BoxMorton(const std::vector<double>& xyz) {
-    double hi[3] = {1, 1, 1};
-    for (int k = 0; k < 3; ++k) lo_[k] = 0;
+    for (int k = 0; k < 3; ++k) lo_[k] = 0, hi_[k] = 1;
     for (size_t i = 0; i < xyz.size(); ++i) {
       const int k = static_cast<int>(i % 3);
       lo_[k] = i < 3 ? xyz[i] : std::min(lo_[k], xyz[i]);
-      hi[k] = i < 3 ? xyz[i] : std::max(hi[k], xyz[i]);
+      hi_[k] = i < 3 ? xyz[i] : std::max(hi_[k], xyz[i]);
     }
-    for (int k = 0; k < 3; ++k) scale_[k] = hi[k] > lo_[k] ? (kGridSize - 1) / (hi[k] - lo_[k]) : 0;
+    for (int k = 0; k < 3; ++k) scale_[k] = hi_[k] > lo_[k] ? (kGridSize - 1) / (hi_[k] - lo_[k]) : 0;
   }
+  // The box's corners.
+  const double* lo() const { return lo_; }
+  const double* hi() const { return hi_; }
   // The key of the grid cell holding x (clamped to the box).
   uint64_t key(const double* x) const {
     uint32_t g[3];
@@ -34,7 +36,7 @@ class BoxMorton {
   }
 
  private:
-  double lo_[3], scale_[3];
+  double lo_[3], hi_[3], scale_[3];
 };
 
 }  // namespace partet

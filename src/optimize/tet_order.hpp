@@ -13,5 +13,4 @@ namespace partet {
 // boundary triangles and ids are untouched.
 void sort_tets_by_space(TetMesh& mesh);
 
-
 }  // namespace partet
