@@ -8,11 +8,13 @@ import shutil
 import subprocess
 
 # partet-np2 is partet under `mpirun -np 2`: both cores, as Gmsh gets two
-# threads; its peak RSS is the largest rank's.
-TOOLS = ("tetgen-q", "tetgen", "gmsh-hxt", "gmsh-delaunay", "netgen", "partet", "partet-np2")
+# threads; its peak RSS is the largest rank's. partet-noopt is partet with
+# --no-optimize: the rest of the pipeline alone, the ceiling that speeding up
+# the optimizer can reach (its meshes are valid, their angles unimproved).
+TOOLS = ("tetgen-q", "tetgen", "gmsh-hxt", "gmsh-delaunay", "netgen", "partet", "partet-np2", "partet-noopt")
 
 PACKAGES = {"tetgen-q": ["tetgen"], "tetgen": ["tetgen"], "gmsh-hxt": ["gmsh"], "gmsh-delaunay": ["gmsh"],
-            "netgen": ["libnglib-dev", "g++"], "partet": [], "partet-np2": []}
+            "netgen": ["libnglib-dev", "g++"], "partet": [], "partet-np2": [], "partet-noopt": []}
 
 GMSH_ALGORITHM = {"gmsh-hxt": "10", "gmsh-delaunay": "1"}
 TETGEN_SWITCHES = {"tetgen-q": "-pYq1.414", "tetgen": "-pY"}
@@ -70,7 +72,8 @@ def prepare(tool, surface, run_dir, partet, nglib_driver):
     if tool == "netgen":
         return [nglib_driver, surface["off"], "out.mesh"], os.path.join(run_dir, "out.mesh")
     ranks = ["mpirun", "--allow-run-as-root", "-np", "2", "--oversubscribe"] if tool == "partet-np2" else []
-    return (ranks + [partet, surface["off"], "-o", "out.vtu", "--report", "report.json", "-q"],
+    options = ["--no-optimize"] if tool == "partet-noopt" else []
+    return (ranks + [partet, surface["off"], "-o", "out.vtu", "--report", "report.json", "-q"] + options,
             os.path.join(run_dir, "out.vtu"))
 
 

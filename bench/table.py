@@ -93,6 +93,9 @@ def write(rows, forced, tools, out_dir, header):
     if "partet-np2" in tools:
         lines += ["", "### partet on 2 ranks (both cores) against the peers and one rank", ""] + ratio_summary(
             rows, "partet-np2", [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
+    if "partet-noopt" in tools:
+        lines += ["", "### partet without its optimizer (--no-optimize) against the peers and partet", ""] + ratio_summary(
+            rows, "partet-noopt", [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
     lines += ["", "### Worst angles (issue 5)", ""] + quality_comparison(rows, forced)
     with open(out_dir + "/table.md", "w") as f:
         f.write("\n".join(lines) + "\n")
