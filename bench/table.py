@@ -41,6 +41,11 @@ def rate_summary(rows, tools):
     return lines
 
 
+# partet run otherwise (bench/peers.py), each against the peers and partet.
+PARTET_VARIANTS = (("partet-np2", "partet on 2 ranks (both cores) against the peers and one rank"),
+                   ("partet-noopt", "partet without its optimizer (--no-optimize) against the peers and partet"))
+
+
 def ratio_summary(rows, mine, peers):
     """MINE / peer per input where both are good (inputs of MIN_TRIANGLES
     or more), median over inputs."""
@@ -90,12 +95,10 @@ def write(rows, forced, tools, out_dir, header):
     lines += ["", "### Speed per tool", ""] + rate_summary(rows, tools)
     lines += ["", "### partet against the peers", ""] + ratio_summary(rows, "partet", [t for t in ("tetgen-q", "gmsh-hxt")
                                                                                         if t in tools])
-    if "partet-np2" in tools:
-        lines += ["", "### partet on 2 ranks (both cores) against the peers and one rank", ""] + ratio_summary(
-            rows, "partet-np2", [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
-    if "partet-noopt" in tools:
-        lines += ["", "### partet without its optimizer (--no-optimize) against the peers and partet", ""] + ratio_summary(
-            rows, "partet-noopt", [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
+    for variant, title in PARTET_VARIANTS:
+        if variant in tools:
+            lines += ["", "### " + title, ""] + ratio_summary(
+                rows, variant, [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
     lines += ["", "### Worst angles (issue 5)", ""] + quality_comparison(rows, forced)
     with open(out_dir + "/table.md", "w") as f:
         f.write("\n".join(lines) + "\n")
