@@ -195,8 +195,7 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
     }
     created.push_back(t);
     if (change_log_) change_log_->push_back(t);
-    quality_[t] = std::numeric_limits<double>::quiet_NaN();
-    radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
+    forget_measures(t);
     std::copy_n(&new_tets[4 * i], 4, &mesh_.tets[4 * t]);
     for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
     for (int f = 0; f < 4; ++f) {
@@ -243,6 +242,11 @@ bool TetTopology::edge_ring(uint32_t t, int i, int j, Ring& ring) const {
   return true;
 }
 
+void TetTopology::forget_measures(uint32_t t) {
+  quality_[t] = std::numeric_limits<double>::quiet_NaN();
+  radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
+}
+
 double TetTopology::measure_radius_ratio(uint32_t t) const { return radius_ratio_of(*this, tet(t)); }
 
 double TetTopology::measure(uint32_t t) const {
@@ -259,8 +263,7 @@ void TetTopology::move_vertex(uint32_t v, const double* x, std::span<const uint3
   std::copy_n(x, 3, &mesh_.xyz[3 * v]);
   const uint32_t change = next_change();
   for (uint32_t t : star) {
-    quality_[t] = std::numeric_limits<double>::quiet_NaN();
-    radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
+    forget_measures(t);
     for (int k = 0; k < 4; ++k) changed_at_[tet(t)[k]] = change;
   }
   if (change_log_) change_log_->insert(change_log_->end(), star.begin(), star.end());

@@ -150,6 +150,8 @@ class TetTopology {
   mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   double measure_radius_ratio(uint32_t t) const;
   mutable std::vector<double> radius_ratio_;  // per slot: tet_radius_ratio, NaN when not known
+  // Both kept measures of slot t unknown again (its tet or a point of it changed).
+  void forget_measures(uint32_t t);
   std::vector<uint32_t>* change_log_ = nullptr;  // see log_changes
   uint32_t changes_ = 1;              // see changes()
   std::vector<uint32_t> changed_at_;  // per vertex: the last change to its star
