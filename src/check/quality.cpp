@@ -229,7 +229,7 @@ void to_json(nlohmann::json& j, const QualityStats& q) {
 bool better_quality(const QualityStats& x, const QualityStats& y) {
   if (x.tets == 0 || y.tets == 0) return false;
   const bool no_worse = x.min_dihedral_deg >= y.min_dihedral_deg && share_no_higher(x, y) &&
-                        x.radius_ratio_mean >= y.radius_ratio_mean;
+                        x.radius_ratio_mean >= y.radius_ratio_mean - kRadiusRatioSlack;
   const bool gains = x.min_dihedral_deg > y.min_dihedral_deg || !share_no_higher(y, x) ||
                      x.radius_ratio_mean > y.radius_ratio_mean;
   return no_worse && gains;

@@ -51,7 +51,12 @@ QualityStats measure_quality(const TetMesh& mesh);
 
 // x is at least as good as y in the three measures the optimizer serves
 // (smallest dihedral angle, share of tets under 10 degrees, mean radius
-// ratio) and better in one; false when either measured no tet.
+// ratio, this last up to kRadiusRatioSlack below y's) and better in one;
+// false when either measured no tet. The slack lets a mesh with a larger
+// smallest angle win over one whose mean radius ratio is a hair higher
+// (the icosahedron refined once: its cone, 58.3 degrees and 0.756, over
+// the optimized front's 33.9 degrees and 0.761).
+inline constexpr double kRadiusRatioSlack = 0.01;
 bool better_quality(const QualityStats& x, const QualityStats& y);
 
 // Non-finite values (an infinite edge ratio) are written as null.

@@ -8,8 +8,9 @@
 // free vertices of the tets still below the target or 30 degrees; after the
 // passes, a sweep of multi-face removals, rounds on the worst tet, a sweep
 // of needle splits (needle_split.hpp) and two sweeps of radius-ratio
-// relaxation (relax_vertex), which moves no worst tet down and adds no
-// sliver.
+// relaxation (relax_vertex), which adds no sliver and lowers a star's worst
+// tet only down to 20 degrees or the mesh's smallest angle, whichever is
+// larger (optimize.cpp, kRelaxFloorAngle).
 //
 // Frozen vertices never move: those of boundary faces (faces of exactly one
 // tet), those of `mesh.tris`, and those the caller flags (e.g. the vertices
@@ -20,8 +21,8 @@
 // existing indices stay; callers drop the unused ones
 // (drop_unused_vertices) when they need a compact mesh. Every change keeps every tet
 // positive by exact orient3d and strictly raises the worst quality of the
-// tets it replaces or moves (a relaxation keeps it and raises the radius
-// ratios); a pass has a bounded amount of work and there
+// tets it replaces or moves (a relaxation raises the radius ratios and
+// keeps the mesh's smallest angle); a pass has a bounded amount of work and there
 // are at most `passes` passes. Deterministic: no hashing order, no threads,
 // no randomness.
 #pragma once

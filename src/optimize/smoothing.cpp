@@ -292,7 +292,7 @@ void least_norm_direction(const std::vector<double>& gradient, const std::vector
   }
 }
 
-bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
+bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor) {
   topo.vertex_star(v, scratch.star);
   if (scratch.star.empty()) return false;
   topo.tet_vertices(scratch.star, scratch.quads);
@@ -313,6 +313,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
     worst = std::min(worst, q);
     slivers += q < sliver;
   }
+  worst = std::min(worst, floor);  // the least quality a trial may leave
   // The trials test the star's two worst tets first: those are the
   // likeliest to drop below the worst (the verdict does not depend on the
   // order; a full sort cost 1.5 % of a run).

@@ -50,12 +50,18 @@ bool smooth_new_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> 
 
 // Smart Laplacian relaxation: moves v to the volume-weighted mean of its
 // tets' circumcentres (the optimal Delaunay triangulation point), else to
-// the centroid of its neighbours, or a half or a quarter of the way, when every star tet stays positive (exact orient3d),
-// the star's worst quality does not drop, no more of its tets have an angle
-// under 10 degrees, and the sum of its tets' radius ratios grows. The optimizer's passes maximise the worst dihedral angle,
-// which leaves the mean radius ratio where it was; this lifts it. True if
-// v moved.
-bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch);
+// the centroid of its neighbours, or a half or a quarter of the way, when
+// every star tet stays positive (exact orient3d), no star tet's quality
+// falls below min(the star's worst quality, `floor`), no more of its tets
+// have an angle under 10 degrees, and the sum of its tets' radius ratios
+// grows. The optimizer's passes maximise the worst dihedral angle, which
+// leaves the mean radius ratio where it was; this lifts it. With `floor` at
+// +infinity the star's worst tet never drops; below it, a star whose worst
+// tet is above the floor may trade some of that margin for radius ratio
+// (the optimizer passes the quality of its relaxation floor angle, or of
+// the mesh's smallest angle when that is larger: optimize.cpp). True if v
+// moved.
+bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor);
 
 // The point of least norm in the convex hull of the vectors gradient[3k ..
 // 3k + 2] for k in `active` (not empty), in d: the steepest common ascent

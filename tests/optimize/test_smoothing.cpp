@@ -116,6 +116,9 @@ TEST(OptimizeMesh, NoPassesOnlyMeasures) {
   EXPECT_EQ(stats.after.radius_ratio_mean, stats.before.radius_ratio_mean);
 }
 
+// No floor: a relaxation may not lower the star's worst tet at all.
+constexpr double kNoFloor = std::numeric_limits<double>::infinity();
+
 double radius_ratio_sum(const TetMesh& m) {
   double sum = 0;
   for (size_t t = 0; t < m.num_tets(); ++t) {
@@ -133,14 +136,14 @@ TEST(Smoothing, RelaxationRaisesTheRadiusRatiosOnly) {
   const double worst = worst_quality(m), sum = radius_ratio_sum(m);
   TetTopology topo(m);
   SmoothingScratch scratch;
-  EXPECT_TRUE(relax_vertex(topo, 8, scratch));
+  EXPECT_TRUE(relax_vertex(topo, 8, scratch, kNoFloor));
   EXPECT_TRUE(all_positive(m));
   EXPECT_GE(worst_quality(m), worst);
   EXPECT_GT(radius_ratio_sum(m), sum);
   // The neighbours are the 8 corners: their centroid is the cube's centre.
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.xyz[24 + i], 0.5, 1e-12);
   EXPECT_EQ(topo.quality(0), tet_quality(m.point(m.tets[0]), m.point(m.tets[1]), m.point(m.tets[2]), m.point(m.tets[3])));
-  EXPECT_FALSE(relax_vertex(topo, 8, scratch));
+  EXPECT_FALSE(relax_vertex(topo, 8, scratch, kNoFloor));
 }
 
 // On jittered cubes with a random centre: relaxation never lowers the worst
@@ -167,7 +170,7 @@ TEST(Smoothing, RelaxationKeepsTheWorstTet) {
     const std::vector<double> before = m.xyz;
     TetTopology topo(m);
     SmoothingScratch scratch;
-    const bool relaxed = relax_vertex(topo, 8, scratch);
+    const bool relaxed = relax_vertex(topo, 8, scratch, kNoFloor);
     moved += relaxed;
     EXPECT_TRUE(all_positive(m)) << "trial " << trial;
     EXPECT_GE(worst_quality(m), worst) << "trial " << trial;
@@ -179,6 +182,38 @@ TEST(Smoothing, RelaxationKeepsTheWorstTet) {
   }
   EXPECT_GT(moved, 50u);
   EXPECT_GT(tempting, 5u);
+}
+
+// With a floor, a relaxation may lower the star's worst tet, but never
+// under the floor: on jittered cubes with a random centre it moves where
+// the floorless one refuses, or further, lowering the worst tet in many
+// cases; every move raises the radius ratios and leaves every tet positive.
+TEST(Smoothing, RelaxationLowersTheWorstTetOnlyToTheFloor) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2), inside(0.3, 0.7);
+  const double floor = quality_of_angle(10);
+  size_t freed = 0, lowered = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    TetMesh m = coned_cube(inside(rng), inside(rng), inside(rng));
+    for (size_t i = 0; i < 24; ++i) m.xyz[i] += jitter(rng);
+    if (!all_positive(m)) continue;
+    const double worst = worst_quality(m), sum = radius_ratio_sum(m);
+    TetMesh kept = m;
+    TetTopology kept_topo(kept);
+    SmoothingScratch scratch;
+    const bool moved_without = relax_vertex(kept_topo, 8, scratch, kNoFloor);
+    TetTopology topo(m);
+    const bool moved = relax_vertex(topo, 8, scratch, floor);
+    EXPECT_TRUE(all_positive(m)) << "trial " << trial;
+    EXPECT_GE(worst_quality(m), std::min(worst, floor)) << "trial " << trial;
+    if (moved) {
+      EXPECT_GT(radius_ratio_sum(m), sum) << "trial " << trial;
+    }
+    freed += moved && !moved_without;
+    lowered += worst_quality(m) < worst;
+  }
+  EXPECT_GT(freed, 0u);
+  EXPECT_GT(lowered, 20u);
 }
 
 // The least norm point of the hull of 1 to 6 random vectors (some through

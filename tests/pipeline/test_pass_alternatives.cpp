@@ -39,9 +39,19 @@ TEST(PassAlternatives, BetterQualityIsNoWorseInAnyMeasureAndBetterInOne) {
   EXPECT_FALSE(better_quality(a, b));
   b.min_dihedral_deg = 31;
   EXPECT_TRUE(better_quality(b, a));
-  b.radius_ratio_mean = 0.69;
+  // A mean radius ratio less than kRadiusRatioSlack lower does not count
+  // against a larger smallest angle; more does.
+  b.radius_ratio_mean = 0.7 - kRadiusRatioSlack / 2;
+  EXPECT_TRUE(better_quality(b, a));
+  EXPECT_FALSE(better_quality(a, b));
+  b.radius_ratio_mean = 0.7 - 2 * kRadiusRatioSlack;
   EXPECT_FALSE(better_quality(b, a));
   EXPECT_FALSE(better_quality(a, b));
+  // Equal angles: a lower mean radius ratio is no gain, even within the slack.
+  QualityStats d = a;
+  d.radius_ratio_mean = 0.7 - kRadiusRatioSlack / 2;
+  EXPECT_FALSE(better_quality(d, a));
+  EXPECT_TRUE(better_quality(a, d));
   QualityStats c = a;
   c.tets = 200;
   c.dihedral_under_10 = 1;  // a larger share under 10 degrees
