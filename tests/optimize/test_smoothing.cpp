@@ -128,6 +128,15 @@ double radius_ratio_sum(const TetMesh& m) {
   return sum;
 }
 
+// A coned cube with a random centre and its corners moved by up to 0.2 in
+// each coordinate: some come out with a non-positive tet.
+TetMesh jittered_coned_cube(std::mt19937& rng) {
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2), inside(0.3, 0.7);
+  TetMesh m = coned_cube(inside(rng), inside(rng), inside(rng));
+  for (size_t i = 0; i < 24; ++i) m.xyz[i] += jitter(rng);
+  return m;
+}
+
 // Relaxation takes a perturbed centre to (or towards) its neighbours'
 // centroid, raising the radius ratios without lowering the worst tet, and
 // leaves a centre already there alone.
@@ -152,11 +161,9 @@ TEST(Smoothing, RelaxationRaisesTheRadiusRatiosOnly) {
 // ratios but lower the worst tet (they must be refused or halved).
 TEST(Smoothing, RelaxationKeepsTheWorstTet) {
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2), inside(0.3, 0.7);
   size_t moved = 0, tempting = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    TetMesh m = coned_cube(inside(rng), inside(rng), inside(rng));
-    for (size_t i = 0; i < 24; ++i) m.xyz[i] += jitter(rng);
+    TetMesh m = jittered_coned_cube(rng);
     if (!all_positive(m)) continue;
     const double worst = worst_quality(m), sum = radius_ratio_sum(m);
     // What the full step to the centroid would do.
@@ -190,12 +197,10 @@ TEST(Smoothing, RelaxationKeepsTheWorstTet) {
 // cases; every move raises the radius ratios and leaves every tet positive.
 TEST(Smoothing, RelaxationLowersTheWorstTetOnlyToTheFloor) {
   std::mt19937 rng(12);
-  std::uniform_real_distribution<double> jitter(-0.2, 0.2), inside(0.3, 0.7);
   const double floor = quality_of_angle(10);
   size_t freed = 0, lowered = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    TetMesh m = coned_cube(inside(rng), inside(rng), inside(rng));
-    for (size_t i = 0; i < 24; ++i) m.xyz[i] += jitter(rng);
+    TetMesh m = jittered_coned_cube(rng);
     if (!all_positive(m)) continue;
     const double worst = worst_quality(m), sum = radius_ratio_sum(m);
     TetMesh kept = m;
