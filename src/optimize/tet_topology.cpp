@@ -48,8 +48,7 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   vertex_tet_.assign(mesh_.num_vertices(), kNone);
   changed_at_.assign(mesh_.num_vertices(), 0);
   mark_.assign(n, 0);
-  quality_.assign(n, std::numeric_limits<double>::quiet_NaN());
-  radius_ratio_.assign(n, std::numeric_limits<double>::quiet_NaN());
+  measures_.assign(n, {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
   // The tets of every vertex, then, vertex by vertex, the faces having it
   // as their smallest vertex, sorted by their other two, so that twins end
   // up side by side: 16 bytes per tet and a small list per vertex (sorting
@@ -187,8 +186,7 @@ void TetTopology::replace(std::span<const uint32_t> old_tets, std::span<const ui
       mesh_.tets.resize(mesh_.tets.size() + 4);
       twin_.resize(twin_.size() + 4, kNone);
       mark_.push_back(0);
-      quality_.push_back(0);
-      radius_ratio_.push_back(0);
+      measures_.push_back({0, 0});
     } else {
       t = free_slots_.back();
       free_slots_.pop_back();
@@ -243,8 +241,7 @@ bool TetTopology::edge_ring(uint32_t t, int i, int j, Ring& ring) const {
 }
 
 void TetTopology::forget_measures(uint32_t t) {
-  quality_[t] = std::numeric_limits<double>::quiet_NaN();
-  radius_ratio_[t] = std::numeric_limits<double>::quiet_NaN();
+  measures_[t] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 }
 
 double TetTopology::measure_radius_ratio(uint32_t t) const { return radius_ratio_of(*this, tet(t)); }
@@ -325,8 +322,7 @@ void TetTopology::compact() {
   vertex_tet_.clear();
   free_slots_.clear();
   mark_.clear();
-  quality_.clear();
-  radius_ratio_.clear();
+  measures_.clear();
 }
 
 }  // namespace partet

@@ -55,15 +55,15 @@ class TetTopology {
   // one of its vertices moves (half the optimizer's quality evaluations
   // were of tets it had measured before).
   double quality(uint32_t t) const {
-    if (std::isnan(quality_[t])) quality_[t] = measure(t);
-    return quality_[t];
+    if (std::isnan(measures_[t].quality)) measures_[t].quality = measure(t);
+    return measures_[t].quality;
   }
   // tet_radius_ratio of alive tet t, kept the same way (the mean, the
   // needles and the relaxation's tets are sought over the whole mesh four
   // times, 3 % of a run computed afresh each time).
   double radius_ratio(uint32_t t) const {
-    if (std::isnan(radius_ratio_[t])) radius_ratio_[t] = measure_radius_ratio(t);
-    return radius_ratio_[t];
+    if (std::isnan(measures_[t].radius_ratio)) measures_[t].radius_ratio = measure_radius_ratio(t);
+    return measures_[t].radius_ratio;
   }
   size_t num_vertices() const { return mesh_.num_vertices(); }
 
@@ -147,9 +147,15 @@ class TetTopology {
   std::vector<uint8_t> on_boundary_;   // see boundary_vertices
   std::vector<uint32_t> free_slots_;   // dead slots, reused last freed first
   double measure(uint32_t t) const;
-  mutable std::vector<double> quality_;  // per slot: tet_quality, NaN when not known
   double measure_radius_ratio(uint32_t t) const;
-  mutable std::vector<double> radius_ratio_;  // per slot: tet_radius_ratio, NaN when not known
+  // Per slot, side by side (the relaxation reads both of each star tet:
+  // one cache line instead of two): tet_quality and tet_radius_ratio, NaN
+  // when not known.
+  struct Measures {
+    double quality;
+    double radius_ratio;
+  };
+  mutable std::vector<Measures> measures_;
   // Both kept measures of slot t unknown again (its tet or a point of it changed).
   void forget_measures(uint32_t t);
   std::vector<uint32_t>* change_log_ = nullptr;  // see log_changes
