@@ -209,6 +209,8 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   std::copy_n(topo.point(v), 3, x);
   if (!ascend(star, x, scratch)) return false;
   topo.move_vertex(v, x, scratch.star);
+  // The ascent measured the star at x: no tet is measured again.
+  for (size_t k = 0; k < star.size(); ++k) topo.keep_quality(scratch.star[k], scratch.quality[k]);
   return true;
 }
 
@@ -317,6 +319,8 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
   // The trials test the star's two worst tets first: those are the
   // likeliest to drop below the worst (the verdict does not depend on the
   // order; a full sort cost 1.5 % of a run).
+  scratch.trial.resize(n);
+  scratch.trial_ratio.resize(n);
   std::vector<size_t>& order = scratch.order;
   order.resize(n);
   std::iota(order.begin(), order.end(), size_t{0});
@@ -341,7 +345,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
       int trial_slivers = 0;
       bool keeps = true;
       for (size_t i = 0; i < n && keeps; ++i) {
-        const double q = star.quality(order[i], y);
+        const double q = scratch.trial[order[i]] = star.quality(order[i], y);
         keeps = q >= worst;
         trial_slivers += q < sliver;
       }
@@ -351,9 +355,11 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
         for (size_t k = 0; k < n; ++k) sum += topo.radius_ratio(scratch.star[k]);
       }
       double trial_sum = 0;
-      for (size_t k = 0; k < n; ++k) trial_sum += star.radius_ratio(k, y);
+      for (size_t k = 0; k < n; ++k) trial_sum += scratch.trial_ratio[k] = star.radius_ratio(k, y);
       if (trial_sum > sum && star.positive(y)) {
         topo.move_vertex(v, y, scratch.star);
+        // The star's measures at y are the trial's: no tet is measured again.
+        for (size_t k = 0; k < n; ++k) topo.keep_measures(scratch.star[k], scratch.trial[k], scratch.trial_ratio[k]);
         return true;
       }
     }

@@ -31,6 +31,7 @@ struct SmoothingScratch {
   std::vector<uint32_t> quads;   // the star's vertex quadruples
   std::vector<double> quality;   // per star tet
   std::vector<double> trial;     // per star tet, at a trial point
+  std::vector<double> trial_ratio;  // per star tet, its radius ratio at a trial point (relax_vertex)
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
   std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)

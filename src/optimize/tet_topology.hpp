@@ -65,6 +65,12 @@ class TetTopology {
     if (std::isnan(measures_[t].radius_ratio)) measures_[t].radius_ratio = measure_radius_ratio(t);
     return measures_[t].radius_ratio;
   }
+  // Set the kept measures of alive tet t to values the caller computed
+  // from t's current points, in t's vertex order, with tet_quality and
+  // tet_radius_ratio (so they are what quality and radius_ratio would
+  // compute): after a move_vertex whose trial already measured the star.
+  void keep_measures(uint32_t t, double quality, double radius_ratio) { measures_[t] = {quality, radius_ratio}; }
+  void keep_quality(uint32_t t, double quality) { measures_[t].quality = quality; }
   size_t num_vertices() const { return mesh_.num_vertices(); }
 
   // Appends a vertex at p (no tet has it yet; with global ids, `global_id`
