@@ -203,13 +203,17 @@ bool try_point_then_kernel(TetTopology& topo, const std::vector<uint32_t>& cavit
 
 // Inserts a vertex at the midpoint of the edge whose closed ring is `ring`,
 // or at the ring's kernel point, into the ring's tets, if that pays.
+// A split `failed` knows is not tried; one refused is added to it.
 bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, SmoothingScratch& scratch,
-                InsertionRule rule) {
+                InsertionRule rule, FailedSplits* failed) {
+  if (failed && failed->known(topo, ring)) return false;
   const double* a = topo.point(ring.a);
   const double* b = topo.point(ring.b);
   const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  return try_point_then_kernel(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch,
-                               rule);
+  if (try_point_then_kernel(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule))
+    return true;
+  if (failed) failed->add(topo, ring);
+  return false;
 }
 
 // Face f of tet t: its three corners and its normal (the cross product of
@@ -409,7 +413,7 @@ bool min_angle_no_worse(const TetTopology& topo, std::span<const uint32_t> old_t
 double insertion_bar(double target) { return std::min(target, quality_of_angle(kShortfallAngle)); }
 
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch, InsertionRule rule,
-                   CavityGrowth* growth, bool near_corners) {
+                   CavityGrowth* growth, bool near_corners, FailedSplits* failed_splits) {
   const uint32_t* v = topo.tet(t);
   double centroid[3];
   for (int i = 0; i < 3; ++i)
@@ -426,7 +430,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
     const bool widest_closes =
         widest_dihedral_faces(topo.point(u[0]), topo.point(u[1]), topo.point(u[2]), topo.point(u[3]), k, l) &&
         topo.edge_ring(t, k, l, ring);
-    if (widest_closes && split_edge(topo, ring, bar, scratch, rule)) return true;
+    if (widest_closes && split_edge(topo, ring, bar, scratch, rule, failed_splits)) return true;
     if (try_point_then_kernel(topo, cavity, centroid, bar, scratch, rule)) return true;
     // For the mesh's worst tet, or a sliver whose widest angle sits on a
     // surface edge (a flat ear), the tet's other edges whose rings close.
@@ -434,7 +438,7 @@ bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratc
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j) {
           if ((i == k && j == l) || (i == l && j == k)) continue;
-          if (topo.edge_ring(t, i, j, ring) && split_edge(topo, ring, bar, scratch, rule)) return true;
+          if (topo.edge_ring(t, i, j, ring) && split_edge(topo, ring, bar, scratch, rule, failed_splits)) return true;
         }
     }
     // The tets around t's vertices: a kernel with room for a good vertex.

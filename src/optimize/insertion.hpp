@@ -103,6 +103,7 @@
 #include <span>
 #include <vector>
 
+#include "optimize/failed_splits.hpp"
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_topology.hpp"
 
@@ -153,9 +154,11 @@ struct CavityGrowth {
   size_t vertices_removed = 0;
 };
 
-// `near_corners` enables step 5, `growth` step 6.
+// `near_corners` enables step 5, `growth` step 6. With `failed_splits`
+// (kept by the caller for one rule and target), the edge splits of steps
+// 1 and 3 it knows are skipped and those refused are added.
 bool insert_vertex(TetTopology& topo, uint32_t t, double target, SmoothingScratch& scratch,
                    InsertionRule rule = InsertionRule::kShortfall, CavityGrowth* growth = nullptr,
-                   bool near_corners = false);
+                   bool near_corners = false, FailedSplits* failed_splits = nullptr);
 
 }  // namespace partet

@@ -7,6 +7,7 @@
 
 #include "core/predicates.hpp"
 #include "optimize/cone_bound.hpp"
+#include "optimize/failed_splits.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/smoothing.hpp"
 
@@ -89,6 +90,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
   if (needles.empty()) return 0;
   const double mean = sum / static_cast<double>(tets);
   Split s;
+  FailedSplits refused;  // the needles around one long edge share it
   size_t split = 0;
   std::vector<uint32_t> made;
   for (int round = 0; round < kNeedleRounds && !needles.empty(); ++round) {
@@ -105,8 +107,12 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
         if (l > length) length = l, longest = e;
       }
       TetTopology::Ring ring;
-      if (!topo.edge_ring(t, kTetEdges[longest][0], kTetEdges[longest][1], ring)) continue;
-      if (!try_split(topo, ring, mean, scratch, s)) continue;
+      if (!topo.edge_ring(t, kTetEdges[longest][0], kTetEdges[longest][1], ring) || refused.known(topo, ring))
+        continue;
+      if (!try_split(topo, ring, mean, scratch, s)) {
+        refused.add(topo, ring);
+        continue;
+      }
       ++split;
       made.insert(made.end(), s.created.begin(), s.created.end());
     }

@@ -326,12 +326,12 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
 // (collapse_vertex) where that pays; the number of vertices inserted or
 // collapsed.
 size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
-                      OptimizeStats& stats, SmoothingScratch& scratch) {
+                      OptimizeStats& stats, SmoothingScratch& scratch, FailedSplits& failed_splits) {
   const size_t before = stats.vertices_inserted + stats.vertices_collapsed;
   const double bar = insertion_bar(target);
   for (uint32_t t : tets_below(topo, bar)) {
     if (!topo.alive(t) || topo.quality(t) >= bar) continue;
-    if (insert_vertex(topo, t, target, scratch))
+    if (insert_vertex(topo, t, target, scratch, InsertionRule::kShortfall, nullptr, false, &failed_splits))
       ++stats.vertices_inserted;
     else if (collapse && collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
       ++stats.vertices_collapsed;
@@ -588,6 +588,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     const double target = quality_of_angle(options.quality_target_deg);
     SmoothingScratch scratch;
     FailedFlips failed_flips;
+    FailedSplits failed_splits;
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;
       part = Stopwatch();
@@ -598,7 +599,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       part = Stopwatch();
       const bool last_of_several = options.passes > 1 && pass + 1 == options.passes;
       const size_t inserted = options.insert_vertices && !last_of_several
-                                  ? insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch)
+                                  ? insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch, failed_splits)
                                   : 0;
       stats.insertion_seconds += part.wall();
       part = Stopwatch();
