@@ -67,7 +67,7 @@ bool cones_beat(const TetTopology& topo, const std::vector<uint32_t>& star,
 }  // namespace
 
 bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& frozen, double bar,
-                     InsertionRule rule) {
+                     InsertionRule rule, RefusedCollapses* refused) {
   const double ten = quality_of_angle(kSliverAngle);
   Collapse best;
   std::vector<uint32_t> star, neighbours, quads, old_quads;
@@ -75,8 +75,10 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   std::vector<double> cone_quality;
   uint32_t corners[4];
   std::copy_n(topo.tet(t), 4, corners);
+  std::vector<uint32_t> tried;
   for (uint32_t v : corners) {
-    if (v >= frozen.size() || frozen[v] || topo.on_boundary(v)) continue;
+    if (v >= frozen.size() || frozen[v] || topo.on_boundary(v) || (refused && refused->known(topo, v))) continue;
+    tried.push_back(v);
     topo.vertex_star(v, star);
     double old_quality = std::numeric_limits<double>::infinity(), old_deficit = 0;
     int old_slivers = 0;
@@ -120,7 +122,12 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
       best.quads = quads;
     }
   }
-  if (best.star.empty()) return false;
+  if (best.star.empty()) {
+    // Every vertex was measured against its own star's worst alone.
+    if (refused)
+      for (uint32_t v : tried) refused->add(topo, v);
+    return false;
+  }
   std::vector<uint32_t> created;
   topo.replace(best.star, best.quads, created);
   return true;

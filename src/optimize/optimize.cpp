@@ -326,14 +326,15 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
 // (collapse_vertex) where that pays; the number of vertices inserted or
 // collapsed.
 size_t insertion_pass(TetTopology& topo, double target, const std::vector<uint8_t>& frozen, bool collapse,
-                      OptimizeStats& stats, SmoothingScratch& scratch, FailedSplits& failed_splits) {
+                      OptimizeStats& stats, SmoothingScratch& scratch, FailedSplits& failed_splits,
+                      RefusedCollapses& refused_collapses) {
   const size_t before = stats.vertices_inserted + stats.vertices_collapsed;
   const double bar = insertion_bar(target);
   for (uint32_t t : tets_below(topo, bar)) {
     if (!topo.alive(t) || topo.quality(t) >= bar) continue;
     if (insert_vertex(topo, t, target, scratch, InsertionRule::kShortfall, nullptr, false, &failed_splits))
       ++stats.vertices_inserted;
-    else if (collapse && collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall))
+    else if (collapse && collapse_vertex(topo, t, frozen, bar, InsertionRule::kShortfall, &refused_collapses))
       ++stats.vertices_collapsed;
   }
   return stats.vertices_inserted + stats.vertices_collapsed - before;
@@ -589,6 +590,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     SmoothingScratch scratch;
     FailedFlips failed_flips;
     FailedSplits failed_splits;
+    RefusedCollapses refused_collapses;
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;
       part = Stopwatch();
@@ -599,7 +601,8 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       part = Stopwatch();
       const bool last_of_several = options.passes > 1 && pass + 1 == options.passes;
       const size_t inserted = options.insert_vertices && !last_of_several
-                                  ? insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch, failed_splits)
+                                  ? insertion_pass(topo, target, fixed, options.collapse_vertices, stats, scratch,
+                                                   failed_splits, refused_collapses)
                                   : 0;
       stats.insertion_seconds += part.wall();
       part = Stopwatch();

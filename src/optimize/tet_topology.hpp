@@ -138,6 +138,10 @@ class TetTopology {
       if (changed_at_[tet(t)[k]] > count) return false;
     return true;
   }
+  // The same for an operation that reads only vertex v's star.
+  bool vertex_unchanged_since(uint32_t v, uint32_t count) const {
+    return count != UINT32_MAX && changed_at_[v] <= count;
+  }
   // Writes the alive tets back to the mesh's tet array, in slot order.
   void compact();
 
