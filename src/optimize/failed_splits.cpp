@@ -6,16 +6,13 @@
 #include <algorithm>
 #include <bit>
 
+#include "core/hash_mix.hpp"
+
 namespace partet {
 namespace {
 
-// One step of splitmix64 over the running hash and a word.
-uint64_t mix(uint64_t hash, uint64_t word) {
-  uint64_t z = hash ^ (word + 0x9e3779b97f4a7c15ULL + (hash << 6) + (hash >> 2));
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+// The running hash with one more word.
+uint64_t mix(uint64_t hash, uint64_t word) { return hash_mix(hash ^ (word + 0x9e3779b97f4a7c15ULL)); }
 
 uint64_t mix_vertex(const TetTopology& topo, uint64_t hash, uint32_t v) {
   hash = mix(hash, v);

@@ -8,26 +8,29 @@
 // their widest edge and each offered it the same split, the needles around a
 // long edge the same: on handle r1, 30 % of the insertion's edge splits and
 // 37 % of the needle splits repeated a refused one (the optimizer 0.79 ->
-// 0.67 s, the same mesh). Rings are keyed by a 64-bit hash; a collision skips one
-// trial (never a change to the mesh). The caller keeps one set per acceptance
-// rule and bar: a split refused under one may pay under another.
+// 0.67 s, the same mesh). Rings are keyed by a 64-bit hash; a collision
+// skips one trial (never a change to the mesh). The refusals are kept in a
+// KeyCache, so the oldest may be forgotten. The caller keeps one set per
+// acceptance rule and bar: a split refused under one may pay under another.
 #pragma once
 
 #include <cstdint>
-#include <unordered_set>
 
+#include "optimize/key_cache.hpp"
 #include "optimize/tet_topology.hpp"
 
 namespace partet {
 
 class FailedSplits {
  public:
-  bool known(const TetTopology& topo, const TetTopology::Ring& ring) const { return keys_.contains(key(topo, ring)); }
-  void add(const TetTopology& topo, const TetTopology::Ring& ring) { keys_.insert(key(topo, ring)); }
+  bool known(const TetTopology& topo, const TetTopology::Ring& ring) const {
+    return refused_.find(key(topo, ring)) != nullptr;
+  }
+  void add(const TetTopology& topo, const TetTopology::Ring& ring) { refused_.put(key(topo, ring), 1); }
 
  private:
   static uint64_t key(const TetTopology& topo, const TetTopology::Ring& ring);
-  std::unordered_set<uint64_t> keys_;
+  KeyCache refused_;
 };
 
 }  // namespace partet
