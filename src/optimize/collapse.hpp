@@ -25,31 +25,18 @@
 #include <cstdint>
 #include <vector>
 
+#include "optimize/failure_record.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/tet_topology.hpp"
 
 namespace partet {
 
-// Vertices none of whose collapses paid, each with the change count then
-// (TetTopology::changes): a vertex's collapses read only its star, so
-// while that is unchanged (vertex_unchanged_since) they would be refused
-// again. The tets of a bad star share its vertices and each offered them
-// the same collapses: on handle r1, 72 % of the vertices offered had been
-// refused, their stars unchanged (the optimizer 0.67 -> 0.59 s, the same
-// meshes byte for byte).
-class RefusedCollapses {
- public:
-  bool known(const TetTopology& topo, uint32_t v) const {
-    return v < at_.size() && at_[v] != 0 && topo.vertex_unchanged_since(v, at_[v]);
-  }
-  void add(const TetTopology& topo, uint32_t v) {
-    if (at_.size() <= v) at_.resize(topo.num_vertices(), 0);
-    at_[v] = topo.changes();
-  }
-
- private:
-  std::vector<uint32_t> at_;
-};
+// Vertices none of whose collapses paid (failure_record.hpp): a vertex's
+// collapses read only its star. The tets of a bad star share its vertices
+// and each offered them the same collapses: on handle r1, 72 % of the
+// vertices offered had been refused, their stars unchanged (the optimizer
+// 0.67 -> 0.59 s, the same meshes byte for byte).
+using RefusedCollapses = FailureRecord<&TetTopology::vertex_unchanged_since>;
 
 // Collapses the vertex of tet t whose best collapse pays most; true when
 // one was applied. A vertex is free when it has a `frozen` flag and the

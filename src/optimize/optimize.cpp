@@ -36,6 +36,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "optimize/collapse.hpp"
+#include "optimize/failure_record.hpp"
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/joint_smoothing.hpp"
@@ -56,24 +57,11 @@ constexpr size_t kWorkPerBadTet = 4;
 // radius ratio, which the relaxation sweeps then win back for less.
 constexpr double kSmoothingAngle = 30;
 
-// Per slot: the change count (TetTopology::changes) when the tet's flip
-// search last found nothing. The search reads only the stars of the tet's
-// vertices, so while those are unchanged it would find nothing again and
-// is not run: the meshes are the same byte for byte (a slot reused by a new
-// tet has its vertices' marks past the count).
-class FailedFlips {
- public:
-  bool known(const TetTopology& topo, uint32_t t) const {
-    return t < at_.size() && at_[t] != 0 && topo.unchanged_since(t, at_[t]);
-  }
-  void add(const TetTopology& topo, uint32_t t) {
-    if (at_.size() <= t) at_.resize(topo.slots(), 0);
-    at_[t] = topo.changes();
-  }
-
- private:
-  std::vector<uint32_t> at_;
-};
+// Tets whose flip search last found nothing (failure_record.hpp): the
+// search reads only the stars of the tet's vertices, so the meshes are the
+// same byte for byte (a slot reused by a new tet has its vertices' marks
+// past the count).
+using FailedFlips = FailureRecord<&TetTopology::unchanged_since>;
 
 // The passes after the first work on the tets under these angles (the
 // last one for every later pass), or under the target if it is lower:
