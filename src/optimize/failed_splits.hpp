@@ -23,6 +23,8 @@ namespace partet {
 
 class FailedSplits {
  public:
+  // For about `rings` refusals at a time (KeyCache).
+  explicit FailedSplits(size_t rings) : refused_(rings) {}
   bool known(const TetTopology& topo, const TetTopology::Ring& ring) const {
     return refused_.find(key(topo, ring)) != nullptr;
   }

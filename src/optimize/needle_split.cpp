@@ -90,7 +90,7 @@ size_t split_needles(TetTopology& topo, double bar, SmoothingScratch& scratch) {
   if (needles.empty()) return 0;
   const double mean = sum / static_cast<double>(tets);
   Split s;
-  FailedSplits refused;  // the needles around one long edge share it
+  FailedSplits refused(needles.size());  // the needles around one long edge share it
   size_t split = 0;
   std::vector<uint32_t> made;
   for (int round = 0; round < kNeedleRounds && !needles.empty(); ++round) {

@@ -577,7 +577,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     const double target = quality_of_angle(options.quality_target_deg);
     SmoothingScratch scratch;
     FailedFlips failed_flips;
-    FailedSplits failed_splits;
+    FailedSplits failed_splits(topo.slots() / 4);
     RefusedCollapses refused_collapses;
     for (int pass = 0; pass < options.passes; ++pass) {
       ++stats.passes;

@@ -39,7 +39,7 @@ TEST(FailedSplits, KnowsARingFromEveryTetAndEndUntilAPointMoves) {
   const uint32_t w = neighbours[0], other = neighbours[1];
   const std::vector<TetTopology::Ring> rings = rings_around(topo, 13, w);
   ASSERT_GE(rings.size(), 8u);  // four tets or more, both orders
-  FailedSplits failed;
+  FailedSplits failed(16);
   EXPECT_FALSE(failed.known(topo, rings[0]));
   failed.add(topo, rings[0]);
   for (const TetTopology::Ring& ring : rings) EXPECT_TRUE(failed.known(topo, ring));

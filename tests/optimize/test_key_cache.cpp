@@ -1,6 +1,7 @@
 // KeyCache: a key just put is found with its value, a key never put is not
 // found, and after many more keys than slots every key is either found with
-// its own latest value or forgotten, never another key's value.
+// its own latest value or forgotten, never another key's value; a cache
+// for a few keys keeps few.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -11,7 +12,7 @@ namespace partet {
 namespace {
 
 TEST(KeyCache, FindsWhatWasPutOrNothing) {
-  KeyCache cache;
+  KeyCache cache(uint64_t{1} << 16);
   EXPECT_EQ(cache.find(7), nullptr);
   cache.put(7, 70);
   ASSERT_NE(cache.find(7), nullptr);
@@ -35,6 +36,13 @@ TEST(KeyCache, FindsWhatWasPutOrNothing) {
   }
   EXPECT_GT(found, kKeys / 8);
   EXPECT_LT(found, kKeys);
+
+  KeyCache small(8);
+  for (uint64_t k = 1; k <= 1000; ++k) small.put(k, static_cast<uint32_t>(k));
+  size_t kept = 0;
+  for (uint64_t k = 1; k <= 1000; ++k) kept += small.find(k) != nullptr;
+  EXPECT_GT(kept, 0u);
+  EXPECT_LE(kept, 64u);
 }
 
 }  // namespace
