@@ -14,6 +14,7 @@
 // acceptance rule and bar: a split refused under one may pay under another.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "optimize/key_cache.hpp"
