@@ -75,10 +75,11 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   std::vector<double> cone_quality;
   uint32_t corners[4];
   std::copy_n(topo.tet(t), 4, corners);
-  std::vector<uint32_t> tried;
+  uint32_t tried[4];  // the free corners measured
+  int tried_count = 0;
   for (uint32_t v : corners) {
     if (v >= frozen.size() || frozen[v] || topo.on_boundary(v) || (refused && refused->known(topo, v))) continue;
-    tried.push_back(v);
+    tried[tried_count++] = v;
     topo.vertex_star(v, star);
     double old_quality = std::numeric_limits<double>::infinity(), old_deficit = 0;
     int old_slivers = 0;
@@ -125,7 +126,7 @@ bool collapse_vertex(TetTopology& topo, uint32_t t, const std::vector<uint8_t>& 
   if (best.star.empty()) {
     // Every vertex was measured against its own star's worst alone.
     if (refused)
-      for (uint32_t v : tried) refused->add(topo, v);
+      for (int i = 0; i < tried_count; ++i) refused->add(topo, tried[i]);
     return false;
   }
   std::vector<uint32_t> created;

@@ -13,7 +13,7 @@
 // mesh's mean per tet added (so the mean rises); else the ring is put back
 // as it was. Up to four rounds: after the first, over the needles the
 // previous round's splits made (the refused rings are unchanged, so trying
-// them again would be refused again); within a round a refused ring is not
+// them again would be refused again); within a sweep a refused ring is not
 // tried again for another needle around the same edge (FailedSplits: 37 %
 // of handle r1's trials). Deterministic; the boundary and the
 // frozen vertices are untouched (m is new and free).
