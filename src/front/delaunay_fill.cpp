@@ -7,13 +7,19 @@
 #include "core/error.hpp"
 #include "core/flat_hash_map.hpp"
 #include "core/predicates.hpp"
+#include "core/shape_measure.hpp"
 #include "core/tet_mesh.hpp"
 #include "core/vertex_triple.hpp"
 #include "delaunay/delaunay.hpp"
+#include "delaunay/edge_recovery.hpp"
 #include "delaunay/tet_triangle_contact.hpp"
 
 namespace partet {
 namespace {
+
+// Tets a recovery flip made on four surface vertices under this shape
+// measure are removed (remove_flat_flipped).
+constexpr double kFlippedShape = 0.3;
 
 // The tets around each vertex of [lo, hi) (the surface's), compressed.
 struct VertexTets {
@@ -40,13 +46,18 @@ class Fill {
   DelaunayFillCounts run(size_t leaves) {
     surface_vertices_ = front_.xyz.size() / 3 - front_.core_vertices - front_.free_vertices;
     d_ = delaunay_tetrahedralize(front_.xyz);
-    const size_t nt = d_.num_tets();
-    for (size_t t = 0; t < nt; ++t) counts_.delaunay_tets += d_.finite(t);
+    for (size_t t = 0; t < d_.num_tets(); ++t) counts_.delaunay_tets += d_.finite(t);
     counts_.walk_steps = d_.walk_steps;
     counts_.cavity_tets = d_.cavity_tets;
+    std::vector<uint8_t> flipped;
+    counts_.recovered_edges =
+        recover_input_edges(d_, std::span<const uint32_t>(front_.faces.data(), 3 * front_.surface_faces), flipped)
+            .recovered_edges;
+    const size_t nt = d_.num_tets();
     removed_.assign(nt, 0);
     walls_.assign(nt, 0);
     find_walls();
+    remove_flat_flipped(flipped);
     remove_across_missing();
     keep_components();
     rebuild(leaves);
@@ -90,6 +101,23 @@ class Fill {
       inner_of_[s] = t_inside ? *found : other;
     }
     counts_.missing_triangles = missing_.size();
+  }
+
+  // Tets a recovery flip made on four surface vertices whose shape is
+  // under kFlippedShape are removed: the optimizer cannot move their
+  // vertices, the front's removals place their own.
+  void remove_flat_flipped(const std::vector<uint8_t>& flipped) {
+    const uint32_t lo = static_cast<uint32_t>(front_.core_vertices);
+    const uint32_t hi = lo + static_cast<uint32_t>(surface_vertices_);
+    for (size_t t = 0; t < d_.num_tets(); ++t) {
+      if (!flipped[t]) continue;
+      const uint32_t* v = &d_.tets[4 * t];
+      bool surface = true;
+      for (int k = 0; k < 4; ++k) surface = surface && v[k] >= lo && v[k] < hi;
+      if (!surface || !(shape_measure(pt(v[0]), pt(v[1]), pt(v[2]), pt(v[3])) < kFlippedShape)) continue;
+      if (!removed_[t]) ++counts_.removed_tets;
+      removed_[t] = 1;
+    }
   }
 
   bool meets(uint32_t t, const uint32_t* tri) const {

@@ -6,21 +6,27 @@
 // templated core:
 //  1. the Delaunay tetrahedralization of every vertex (the core's lattice
 //     points, the surface's vertices, the gap vertices), delaunay.hpp;
-//  2. the input triangles that are Delaunay faces become walls; every
-//     Delaunay tet that meets a missing input triangle beyond the vertices
+//  2. the missing input edges recovered by flips (edge_recovery.hpp), so
+//     that more input triangles are faces; of the tets the flips made, those
+//     on four surface vertices whose shape measure is under 0.3 are removed
+//     (the optimizer cannot move their vertices, the front's removals
+//     place their own; kept, they left the smallest angle lower on
+//     several CAD parts);
+//  3. the input triangles that are faces become walls; every
+//     tet that meets a missing input triangle beyond the vertices
 //     they share (tet_triangle_contact.hpp) is removed. The tets meeting
 //     one are found from the tets around its vertices, growing across
 //     faces to the tets that meet it too: its relative interior is
 //     connected and crosses from tet to tet through faces, or along edges
 //     whose ring of tets all meet it;
-//  3. the tets left split into components across faces that are not
+//  4. the tets left split into components across faces that are not
 //     walls; a path from inside the surface to outside crosses it through
 //     a wall or through a removed tet, so a component lies on one side.
 //     A component is kept when it has a wall with the component on the
 //     material side and none with it on the other, and no tet on the
 //     enclosing tet's corners; a component with no wall (closed in by
 //     removed tets) is dropped, and the face removals fill its place;
-//  4. the kept tets replace the core's (the templates' lattice points
+//  5. the kept tets replace the core's (the templates' lattice points
 //     stay, and the tetrahedralization of the core's lattice is mostly
 //     the templates' own: the body-centred lattice has a unique Delaunay
 //     tetrahedralization, which is the paired faces' tets; at 2:1
@@ -55,7 +61,8 @@ constexpr size_t kDelaunayFillTriangles = 1000;
 
 struct DelaunayFillCounts {
   size_t delaunay_tets = 0;       // finite tets of the tetrahedralization
-  size_t missing_triangles = 0;   // input triangles that are not Delaunay faces
+  size_t recovered_edges = 0;     // input edges made by edge removals (edge_recovery.hpp)
+  size_t missing_triangles = 0;   // input triangles that are not faces after them
   size_t removed_tets = 0;        // tets meeting one of them
   size_t kept_tets = 0;
   size_t dropped_components = 0;  // components without a wall, or with walls on both sides

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/hash_mix.hpp"
 #include "core/predicates.hpp"
+#include "core/shape_measure.hpp"
 #include "front/face_queue.hpp"
 #include "front/removal_checks.hpp"
 #include "octree/range_query.hpp"
@@ -49,14 +50,6 @@ struct Target {
 double squared_distance(const double* x, const double* y) {
   const double dx = x[0] - y[0], dy = x[1] - y[1], dz = x[2] - y[2];
   return dx * dx + dy * dy + dz * dz;
-}
-
-// q = √2 det / l_rms³ (1 for the regular tet, 0 when flat).
-double shape_measure(const double* a, const double* b, const double* c, const double* p) {
-  const double sum = squared_distance(a, b) + squared_distance(b, c) + squared_distance(c, a) +
-                     squared_distance(a, p) + squared_distance(b, p) + squared_distance(c, p);
-  const double rms = std::sqrt(sum / 6);
-  return std::sqrt(2.0) * orient3d_value(a, b, c, p) / (rms * rms * rms);
 }
 
 // The target order's weights (face_removal.hpp): a face closed counts as

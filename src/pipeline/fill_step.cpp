@@ -9,6 +9,7 @@ ojson fill_step(InitialFront& front, const LinearOctree& tree, TetMesh& core) {
   const DelaunayFillCounts n = delaunay_fill(front, tree, core);
   ojson c;
   c["delaunay tets"] = n.delaunay_tets;
+  c["recovered edges"] = n.recovered_edges;
   c["missing triangles"] = n.missing_triangles;
   c["removed tets"] = n.removed_tets;
   c["kept tets"] = n.kept_tets;

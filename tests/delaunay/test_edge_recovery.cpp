@@ -1,0 +1,168 @@
+// recover_input_edges (delaunay/edge_recovery.hpp): a flat quad whose
+// other diagonal is Delaunay, a bent one, and the vertices of corpus
+// surfaces (a CAD part, a refined body). After the recovery every tet is
+// positive, faces pair up with their neighbours, the tets still fill the
+// enclosing tet, every input triangle that was a face still is, the
+// recovered edges are edges, the flags mark the tets the flips made, and
+// the same input gives the same tets.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/predicates.hpp"
+#include "delaunay/delaunay.hpp"
+#include "delaunay/edge_recovery.hpp"
+#include "io/mesh_file.hpp"
+#include "surface/midpoint_refine.hpp"
+#include "surface/surface_mesh.hpp"
+#include "test_support.hpp"
+
+namespace partet {
+namespace {
+
+using Triple = std::array<uint32_t, 3>;
+
+Triple sorted(uint32_t a, uint32_t b, uint32_t c) {
+  Triple t{a, b, c};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+std::set<Triple> faces_of(const DelaunayTets& d) {
+  std::set<Triple> faces;
+  for (size_t t = 0; t < d.num_tets(); ++t) {
+    const uint32_t* v = &d.tets[4 * t];
+    for (int i = 0; i < 4; ++i) faces.insert(sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]));
+  }
+  return faces;
+}
+
+bool has_edge(const DelaunayTets& d, uint32_t u, uint32_t w) {
+  for (size_t t = 0; t < d.num_tets(); ++t) {
+    const uint32_t* v = &d.tets[4 * t];
+    if (std::find(v, v + 4, u) != v + 4 && std::find(v, v + 4, w) != v + 4) return true;
+  }
+  return false;
+}
+
+// Positive tets, reciprocal neighbours over the same three vertices, and
+// the enclosing tet's volume filled.
+void expect_tetrahedralization(const DelaunayTets& d) {
+  double total = 0;
+  size_t outer_faces = 0;
+  for (size_t t = 0; t < d.num_tets(); ++t) {
+    const uint32_t* v = &d.tets[4 * t];
+    const double* p[4];
+    for (int k = 0; k < 4; ++k) p[k] = &d.xyz[3 * size_t{v[k]}];
+    ASSERT_GT(orient3d(p[0], p[1], p[2], p[3]), 0) << "tet " << t;
+    total += orient3d_value(p[0], p[1], p[2], p[3]);
+    for (int i = 0; i < 4; ++i) {
+      const uint32_t across = d.neighbours[4 * t + i];
+      if (across == kNoNeighbour) {
+        ++outer_faces;
+        continue;
+      }
+      ASSERT_EQ(d.neighbours[across], 4 * t + i) << "tet " << t;
+      const uint32_t* w = &d.tets[4 * size_t{across / 4}];
+      EXPECT_EQ(sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]),
+                sorted(w[(across + 1) % 4], w[(across + 2) % 4], w[(across + 3) % 4]))
+          << "tet " << t << " face " << i;
+    }
+  }
+  EXPECT_EQ(outer_faces, 4u);
+  const size_t n = d.num_points;
+  const double* c[4];
+  for (int k = 0; k < 4; ++k) c[k] = &d.xyz[3 * (n + k)];
+  const double whole = orient3d_value(c[0], c[1], c[2], c[3]);
+  EXPECT_NEAR(total, whole, 1e-9 * whole);
+}
+
+// Recovers the edges of `triangles` among `points`; checks the result and
+// returns the counts.
+EdgeRecoveryCounts recover_and_check(const std::vector<double>& points, const std::vector<uint32_t>& triangles) {
+  DelaunayTets d = delaunay_tetrahedralize(points);
+  const size_t tets_before = d.num_tets();
+  const std::set<Triple> before = faces_of(d);
+  std::vector<uint8_t> flipped;
+  const EdgeRecoveryCounts counts = recover_input_edges(d, triangles, flipped);
+  expect_tetrahedralization(d);
+  EXPECT_EQ(flipped.size(), d.num_tets());
+  const size_t made = static_cast<size_t>(std::count(flipped.begin(), flipped.end(), 1));
+  EXPECT_EQ(made > 0, counts.recovered_edges > 0);
+  EXPECT_GE(d.num_tets(), tets_before);
+  const std::set<Triple> after = faces_of(d);
+  size_t missing = 0;
+  for (size_t s = 0; s < triangles.size() / 3; ++s) {
+    const Triple f = sorted(triangles[3 * s], triangles[3 * s + 1], triangles[3 * s + 2]);
+    if (before.count(f)) {
+      EXPECT_TRUE(after.count(f)) << "input triangle " << s << " was a face and is not";
+    }
+    missing += !before.count(f);
+  }
+  EXPECT_EQ(counts.missing_triangles, missing);
+  return counts;
+}
+
+// Quad a b c d in the plane z = 0 (its short diagonal bd), with a point
+// well above and one well below, and the input triangles abc and acd.
+TEST(EdgeRecovery, AFlatQuadGetsTheInputDiagonal) {
+  const std::vector<double> points = {-2, 0, 0, 0, 1, 0, 2, 0, 0, 0, -1, 0, 0, 0, 3, 0.1, 0.2, -3};
+  const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+  ASSERT_FALSE(has_edge(delaunay_tetrahedralize(points), 0, 2));
+  DelaunayTets d = delaunay_tetrahedralize(points);
+  std::vector<uint8_t> flipped;
+  const EdgeRecoveryCounts n = recover_input_edges(d, triangles, flipped);
+  EXPECT_EQ(n.missing_triangles, 2u);
+  EXPECT_EQ(n.recovered_edges, 1u);
+  EXPECT_TRUE(has_edge(d, 0, 2));
+  EXPECT_FALSE(has_edge(d, 1, 3));
+  const std::set<Triple> faces = faces_of(d);
+  EXPECT_TRUE(faces.count(sorted(0, 1, 2)) && faces.count(sorted(0, 2, 3)));
+  recover_and_check(points, triangles);
+}
+
+// The same quad bent along ac (b and d raised): ac and bd are skew, and a
+// flip adds ac.
+TEST(EdgeRecovery, ABentQuadGetsTheInputDiagonal) {
+  const std::vector<double> points = {-2, 0, 0, 0, 1, 0.4, 2, 0, 0, 0, -1, 0.4, 0, 0, 3, 0.1, 0.2, -3};
+  const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+  ASSERT_FALSE(has_edge(delaunay_tetrahedralize(points), 0, 2));
+  const EdgeRecoveryCounts n = recover_and_check(points, triangles);
+  EXPECT_EQ(n.recovered_edges, 1u);
+  DelaunayTets d = delaunay_tetrahedralize(points);
+  std::vector<uint8_t> flipped;
+  recover_input_edges(d, triangles, flipped);
+  const std::set<Triple> faces = faces_of(d);
+  EXPECT_TRUE(faces.count(sorted(0, 1, 2)) && faces.count(sorted(0, 2, 3)));
+}
+
+// The vertices of a CAD part (long needle triangles) and of a body split
+// 1:4 (coplanar quads): many edges come back, none is lost.
+TEST(EdgeRecovery, CorpusSurfacesGetEdgesBack) {
+  for (const bool refine : {false, true}) {
+    const std::string name = refine ? "good/eight.off" : "good/lever.stl";
+    SurfaceMesh surface = read_surface_file(test::data_path(name));
+    if (refine) surface = refine_midpoints(surface);
+    const EdgeRecoveryCounts n = recover_and_check(surface.xyz, surface.tris);
+    EXPECT_GT(n.missing_triangles, 0u) << name;
+    EXPECT_GT(n.recovered_edges, n.missing_triangles / 10) << name;
+  }
+}
+
+TEST(EdgeRecovery, SameInputSameTets) {
+  const SurfaceMesh surface = read_surface_file(test::data_path("good/lever.stl"));
+  DelaunayTets a = delaunay_tetrahedralize(surface.xyz), b = delaunay_tetrahedralize(surface.xyz);
+  std::vector<uint8_t> fa, fb;
+  recover_input_edges(a, surface.tris, fa);
+  recover_input_edges(b, surface.tris, fb);
+  EXPECT_EQ(a.tets, b.tets);
+  EXPECT_EQ(a.neighbours, b.neighbours);
+  EXPECT_EQ(fa, fb);
+}
+
+}  // namespace
+}  // namespace partet
