@@ -12,55 +12,23 @@
 #include "core/error.hpp"
 #include "core/predicates.hpp"
 #include "delaunay/delaunay.hpp"
+#include "tetrahedralization_checks.hpp"
 
 namespace partet {
 namespace {
 
-double volume6(const DelaunayTets& d, size_t t) {
-  const uint32_t* v = &d.tets[4 * t];
-  const double* p[4];
-  for (int k = 0; k < 4; ++k) p[k] = &d.xyz[3 * size_t{v[k]}];
-  return orient3d_value(p[0], p[1], p[2], p[3]);
-}
-
-// Positive tets, reciprocal neighbours over the same three vertices, the
-// enclosing tet's volume filled, and the empty-sphere property checked
-// against every point.
+// A tetrahedralization (tetrahedralization_checks.hpp) with the
+// empty-sphere property checked against every point.
 void expect_delaunay(const DelaunayTets& d) {
-  const size_t n = d.num_points;
-  ASSERT_EQ(d.xyz.size(), 3 * (n + 4));
-  double total = 0;
-  size_t outer_faces = 0;
+  expect_tetrahedralization(d);
   for (size_t t = 0; t < d.num_tets(); ++t) {
+    if (!d.finite(t)) continue;
     const uint32_t* v = &d.tets[4 * t];
     const double* p[4];
     for (int k = 0; k < 4; ++k) p[k] = &d.xyz[3 * size_t{v[k]}];
-    ASSERT_GT(orient3d(p[0], p[1], p[2], p[3]), 0) << "tet " << t;
-    total += volume6(d, t);
-    for (int i = 0; i < 4; ++i) {
-      const uint32_t across = d.neighbours[4 * t + i];
-      if (across == kNoNeighbour) {
-        ++outer_faces;
-        continue;
-      }
-      ASSERT_EQ(d.neighbours[across], 4 * t + i);
-      const uint32_t* w = &d.tets[4 * size_t{across / 4}];
-      for (int k = 0; k < 4; ++k) {
-        if (k == i) continue;
-        bool found = false;
-        for (int m = 0; m < 4; ++m) found |= m != static_cast<int>(across % 4) && w[m] == v[k];
-        EXPECT_TRUE(found) << "tet " << t << " face " << i;
-      }
-    }
-    if (!d.finite(t)) continue;
-    for (size_t q = 0; q < n; ++q)
+    for (size_t q = 0; q < d.num_points; ++q)
       ASSERT_LE(insphere(p[0], p[1], p[2], p[3], &d.xyz[3 * q]), 0) << "point " << q << " inside tet " << t;
   }
-  EXPECT_EQ(outer_faces, 4u);
-  const double* c[4];
-  for (int k = 0; k < 4; ++k) c[k] = &d.xyz[3 * (n + k)];
-  const double whole = orient3d_value(c[0], c[1], c[2], c[3]);
-  EXPECT_NEAR(total, whole, 1e-9 * whole);
 }
 
 TEST(Delaunay, RandomPoints) {

@@ -20,6 +20,7 @@
 #include "surface/midpoint_refine.hpp"
 #include "surface/surface_mesh.hpp"
 #include "test_support.hpp"
+#include "tetrahedralization_checks.hpp"
 
 namespace partet {
 namespace {
@@ -47,38 +48,6 @@ bool has_edge(const DelaunayTets& d, uint32_t u, uint32_t w) {
     if (std::find(v, v + 4, u) != v + 4 && std::find(v, v + 4, w) != v + 4) return true;
   }
   return false;
-}
-
-// Positive tets, reciprocal neighbours over the same three vertices, and
-// the enclosing tet's volume filled.
-void expect_tetrahedralization(const DelaunayTets& d) {
-  double total = 0;
-  size_t outer_faces = 0;
-  for (size_t t = 0; t < d.num_tets(); ++t) {
-    const uint32_t* v = &d.tets[4 * t];
-    const double* p[4];
-    for (int k = 0; k < 4; ++k) p[k] = &d.xyz[3 * size_t{v[k]}];
-    ASSERT_GT(orient3d(p[0], p[1], p[2], p[3]), 0) << "tet " << t;
-    total += orient3d_value(p[0], p[1], p[2], p[3]);
-    for (int i = 0; i < 4; ++i) {
-      const uint32_t across = d.neighbours[4 * t + i];
-      if (across == kNoNeighbour) {
-        ++outer_faces;
-        continue;
-      }
-      ASSERT_EQ(d.neighbours[across], 4 * t + i) << "tet " << t;
-      const uint32_t* w = &d.tets[4 * size_t{across / 4}];
-      EXPECT_EQ(sorted(v[(i + 1) % 4], v[(i + 2) % 4], v[(i + 3) % 4]),
-                sorted(w[(across + 1) % 4], w[(across + 2) % 4], w[(across + 3) % 4]))
-          << "tet " << t << " face " << i;
-    }
-  }
-  EXPECT_EQ(outer_faces, 4u);
-  const size_t n = d.num_points;
-  const double* c[4];
-  for (int k = 0; k < 4; ++k) c[k] = &d.xyz[3 * (n + k)];
-  const double whole = orient3d_value(c[0], c[1], c[2], c[3]);
-  EXPECT_NEAR(total, whole, 1e-9 * whole);
 }
 
 // Recovers the edges of `triangles` among `points`; checks the result and
