@@ -518,7 +518,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
         s.mesh = std::move(s.core.mesh);
         const RankLeaves ranks{&s.boundary.front.leaves, &s.boundary.separators};
         return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo,
-                                 attempt == TreeAttempt::kShapeOrder, options.treeless);
+                                 attempt == TreeAttempt::kShapeOrder);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         // On a refined tree, the rescues wait for the first tree (every

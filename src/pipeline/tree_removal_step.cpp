@@ -1,4 +1,4 @@
-// tree_removal_step: the two passes (or the first) on one rank; on P ranks, each pass in
+// tree_removal_step: the two passes on one rank; on P ranks, each pass in
 // rounds on every rank's copy of the front, the interfaces left by one
 // round spread over the ranks for the next, and what is left done by rank
 // 0 alone (see tree_removal_step.hpp).
@@ -40,19 +40,13 @@ void add_work(RemovalCounts& into, const RemovalCounts& x) {
 }
 
 // The shaped pass (with `shaped_memo`), then the plain one (with `memo`),
-// over every alive face; their counts summed. The plain pass is left out
-// when `plain_follows` (the tree-less removals start with it) and no gap
-// vertex is left free (it could have used one, and they are dropped next);
-// `plain_left` says whether it was.
+// over every alive face; their counts summed.
 RemovalCounts two_passes(Front& front, LinearOctree& tree, const RootCube& root, TetMesh& mesh, int rank,
-                         bool shape_order, RemovalMemo& shaped_memo, RemovalMemo& memo, bool plain_follows,
-                         bool& plain_left) {
+                         bool shape_order, RemovalMemo& shaped_memo, RemovalMemo& memo) {
   // Well-shaped tets first (the best few targets of each face); the
   // nearly flat ones a front may need only where nothing better was found.
   const RemovalCounts first =
       one_pass(front, tree, root, mesh, rank, kShapedRemovalQuality, shape_order, shaped_memo, nullptr);
-  plain_left = plain_follows && front.num_free_vertices() == 0;
-  if (plain_left) return first;
   RemovalCounts n = one_pass(front, tree, root, mesh, rank, 0, shape_order, memo, nullptr);
   add_work(n, first);
   return n;
@@ -111,13 +105,12 @@ void take_failures(const std::string& image, size_t& pos, const Front& front, Re
 
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                         TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
-                        bool shape_order, bool plain_follows) {
+                        bool shape_order) {
   const bool root_rank = comm.rank() == 0;
   const bool distributed = comm.size() > 1;
   ojson c;
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
-  bool plain_left = false;  // the plain pass left to the tree-less removals
   RemovalMemo shaped_memo;  // the shaped passes' failures (this rank's)
   RemovalCounts n;  // rank 0's own passes over every leaf
   if (distributed) {
@@ -207,7 +200,7 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
     }
     n.faces_left = front->num_alive_faces();
   } else {
-    n = two_passes(*front, tree, root, mesh, 0, shape_order, shaped_memo, memo, plain_follows, plain_left);
+    n = two_passes(*front, tree, root, mesh, 0, shape_order, shaped_memo, memo);
   }
   // Gap vertices no tet took are dropped: the tree-less removals place
   // their own where a cavity needs one, and a free vertex inside a cavity
@@ -223,7 +216,6 @@ ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOct
   c["checks"] = checks + n.checks;
   c["checks skipped"] = skipped + n.skipped_checks;
   c["gap vertices used"] = initial.free_vertices - unused;
-  c["plain pass left to the tree-less removals"] = plain_left;
   return c;
 }
 

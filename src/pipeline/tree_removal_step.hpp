@@ -1,13 +1,7 @@
 // The pipeline's tree-supported face removals (paper §4.1 step 4, and the
 // finishing steps on rank 0), on one rank or on P:
 //  - one rank: a pass taking only well-shaped tets (kShapedRemovalQuality),
-//    then one taking any valid tet, over the whole front; the second is
-//    left to the tree-less removals when they follow (`plain_follows`: they
-//    start with that pass over the whole front) and no gap vertex is free
-//    after the first (the same meshes on the 64 r0 and r1 inputs, the two
-//    removal steps 7.01 -> 6.69 s on fourteen CAD-heavy inputs three
-//    times: with its failures in the memo the tree-less pass went over
-//    them again);
+//    then one taking any valid tet, over the whole front;
 //  - P ranks: every rank holds the whole tree, core and initial front
 //    (gathered everywhere) and the leaves' owners (leaf_owners.hpp: the
 //    boundary partition's, the separators' for the other leaves). The
@@ -71,10 +65,9 @@ struct RankLeaves {
 // rank, on it). On return `front` is rank 0's front (null elsewhere),
 // `mesh` rank 0's tets (empty elsewhere) and `memo` what rank 0's passes
 // learnt. `ranks` is ignored on one rank. `shape_order`: targets best
-// shape first (RemovalOptions::shape_order). `plain_follows`: the tree-less
-// removals run next, on one rank.
+// shape first (RemovalOptions::shape_order).
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                         TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
-                        bool shape_order, bool plain_follows);
+                        bool shape_order);
 
 }  // namespace partet
