@@ -63,7 +63,7 @@ struct DelaunayFillCounts {
   size_t delaunay_tets = 0;       // finite tets of the tetrahedralization
   size_t recovered_edges = 0;     // input edges made by edge removals (edge_recovery.hpp)
   size_t missing_triangles = 0;   // input triangles that are not faces after them
-  size_t removed_tets = 0;        // tets meeting one of them
+  size_t removed_tets = 0;        // tets meeting one of them, and the flat flipped ones (step 2)
   size_t kept_tets = 0;
   size_t dropped_components = 0;  // components without a wall, or with walls on both sides
   size_t walk_steps = 0;          // tets visited locating the points
