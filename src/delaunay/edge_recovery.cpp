@@ -78,29 +78,7 @@ class Recovery {
   }
 
   // A tet having both u and w, or kNoNeighbour: a search of u's star.
-  uint32_t tet_with_edge(uint32_t u, uint32_t w) {
-    const uint32_t start = vertex_tet_[u];
-    if (start == kNoNeighbour) return kNoNeighbour;
-    if (++stamp_ == 0) {
-      std::fill(seen_.begin(), seen_.end(), 0);
-      stamp_ = 1;
-    }
-    queue_.assign(1, start);
-    seen_[start] = stamp_;
-    for (size_t q = 0; q < queue_.size(); ++q) {
-      const uint32_t t = queue_[q];
-      const uint32_t* v = tet(t);
-      if (v[0] == w || v[1] == w || v[2] == w || v[3] == w) return t;
-      for (int i = 0; i < 4; ++i) {
-        if (v[i] == u) continue;  // the face opposite u does not have it
-        const uint32_t across = d_.neighbours[4 * size_t{t} + i];
-        if (across == kNoNeighbour || seen_[across / 4] == stamp_) continue;
-        seen_[across / 4] = stamp_;
-        queue_.push_back(across / 4);
-      }
-    }
-    return kNoNeighbour;
-  }
+  uint32_t tet_with_edge(uint32_t u, uint32_t w) { return search_star(u, w); }
 
   // The ring of edge (b, d) from tet t, which has both; false when it
   // meets the enclosing tet's faces or is longer than kMaxRecoveryRing.
@@ -362,10 +340,15 @@ class Recovery {
   }
 
   // The tets having v, in queue_.
-  void star_of(uint32_t v) {
+  void star_of(uint32_t v) { search_star(v, kNoNeighbour); }
+
+  // Breadth first over v's star (across the faces having v) into queue_,
+  // from its recorded tet: the first tet met that also has w, or
+  // kNoNeighbour after the whole star.
+  uint32_t search_star(uint32_t v, uint32_t w) {
     queue_.clear();
     const uint32_t start = vertex_tet_[v];
-    if (start == kNoNeighbour) return;
+    if (start == kNoNeighbour) return kNoNeighbour;
     if (++stamp_ == 0) {
       std::fill(seen_.begin(), seen_.end(), 0);
       stamp_ = 1;
@@ -374,15 +357,19 @@ class Recovery {
     seen_[start] = stamp_;
     for (size_t k = 0; k < queue_.size(); ++k) {
       const uint32_t t = queue_[k];
+      const uint32_t* q = tet(t);
+      if (w != kNoNeighbour && (q[0] == w || q[1] == w || q[2] == w || q[3] == w)) return t;
       for (int i = 0; i < 4; ++i) {
-        if (tet(t)[i] == v) continue;
+        if (q[i] == v) continue;  // the face opposite v does not have it
         const uint32_t across = d_.neighbours[4 * size_t{t} + i];
         if (across == kNoNeighbour || seen_[across / 4] == stamp_) continue;
         seen_[across / 4] = stamp_;
         queue_.push_back(across / 4);
       }
     }
+    return kNoNeighbour;
   }
+
   // The local index of the vertex of tet t that is none of x, y, z.
   int local_face(uint32_t t, uint32_t x, uint32_t y, uint32_t z) const {
     const uint32_t* q = tet(t);
