@@ -8,7 +8,6 @@
 #include <limits>
 #include <numeric>
 
-#include "check/quality.hpp"
 #include "core/distance.hpp"
 #include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
@@ -33,8 +32,10 @@ void cross3(const double* u, const double* w, double* out) {
 // position replaced by a trial point.
 class Star {
  public:
-  Star(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads)
-      : topo_(topo), v_(v), quads_(quads), n_(quads.size() / 4) {}
+  Star(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads, StarPoints& points)
+      : topo_(topo), v_(v), quads_(quads), n_(quads.size() / 4), points_(points) {
+    points_.load(topo, v, quads);
+  }
   size_t size() const { return n_; }
 
   double quality(size_t k, const double* x) const {
@@ -58,31 +59,30 @@ class Star {
     }
     return true;
   }
-  // True when every star tet's quality with v at x exceeds `bar`; stops at
-  // the first that does not, trying the tets of `first` (ascending) before
-  // the others: the worst tets are the likeliest to fail. The qualities go
-  // to `quality` (complete only when true).
+  // True when every star tet's quality with v at x exceeds `bar`; the tets
+  // of `first` are tried one by one before the others, measured together:
+  // the worst tets are the likeliest to fail. The qualities go to `quality`
+  // (complete only when true).
   bool all_above(const double* x, double bar, const std::vector<size_t>& first,
                  std::vector<double>& quality) const {
     for (size_t k : first) {
       quality[k] = this->quality(k, x);
       if (!(quality[k] > bar)) return false;
     }
-    size_t next_first = 0;
-    for (size_t k = 0; k < n_; ++k) {
-      if (next_first < first.size() && first[next_first] == k) {
-        ++next_first;
-        continue;
-      }
-      quality[k] = this->quality(k, x);
+    qualities(x, quality);
+    for (size_t k = 0; k < n_; ++k)
       if (!(quality[k] > bar)) return false;
-    }
     return true;
   }
-  double radius_ratio(size_t k, const double* x) const {
-    const double* p[4];
-    points(k, x, p);
-    return tet_radius_ratio(p[0], p[1], p[2], p[3]);
+  // Every star tet's quality with v at x, in `quality` (sized).
+  void qualities(const double* x, std::vector<double>& quality) const {
+    points_.place(x);
+    points_.qualities(quality.data());
+  }
+  // Every star tet's radius ratio with v at x, in `ratio` (sized).
+  void radius_ratios(const double* x, std::vector<double>& ratio) const {
+    points_.place(x);
+    points_.radius_ratios(ratio.data());
   }
   // Mean distance from x to the other vertices of the star's tets.
   double scale(const double* x) const {
@@ -108,6 +108,7 @@ class Star {
   uint32_t v_;
   std::span<const uint32_t> quads_;
   size_t n_;
+  StarPoints& points_;  // the star's corners by coordinate, v's set per trial
 };
 
 // The point of segment ab of least norm.
@@ -202,7 +203,7 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
   topo.vertex_star(v, scratch.star);
   if (scratch.star.empty()) return false;
   topo.tet_vertices(scratch.star, scratch.quads);
-  const Star star(topo, v, scratch.quads);
+  const Star star(topo, v, scratch.quads, scratch.points);
   scratch.quality.resize(star.size());
   for (size_t k = 0; k < star.size(); ++k) scratch.quality[k] = topo.quality(scratch.star[k]);
   double x[3];
@@ -215,12 +216,12 @@ bool smooth_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch) {
 }
 
 bool smooth_new_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> quads, SmoothingScratch& scratch) {
-  const Star star(topo, v, quads);
+  const Star star(topo, v, quads, scratch.points);
   if (star.size() == 0) return false;
   double x[3];
   std::copy_n(topo.point(v), 3, x);
   scratch.quality.resize(star.size());
-  for (size_t k = 0; k < star.size(); ++k) scratch.quality[k] = star.quality(k, x);
+  star.qualities(x, scratch.quality);
   if (!ascend(star, x, scratch)) return false;
   topo.place_vertex(v, x);
   return true;
@@ -298,7 +299,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
   topo.vertex_star(v, scratch.star);
   if (scratch.star.empty()) return false;
   topo.tet_vertices(scratch.star, scratch.quads);
-  const Star star(topo, v, scratch.quads);
+  const Star star(topo, v, scratch.quads, scratch.points);
   const size_t n = scratch.star.size();
   // The neighbours, each once.
   std::vector<uint32_t>& around = scratch.neighbours;
@@ -338,20 +339,21 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
   const double* targets[2] = {odt, centroid};
   // The radius ratios first: most refused trials raise no radius ratio
   // (femur r1: 156,000 of 189,000), and then no quality is measured; then
-  // the qualities (stopping at the first below the old worst), then exact
-  // orientation.
+  // the qualities (all at once: StarPoints), then exact orientation.
   for (int i = has_odt ? 0 : 1; i < 2; ++i)
     for (const double step : {1.0, 0.5, 0.25}) {
       const double* target = targets[i];
       const double y[3] = {x[0] + step * (target[0] - x[0]), x[1] + step * (target[1] - x[1]),
                            x[2] + step * (target[2] - x[2])};
+      star.radius_ratios(y, scratch.trial_ratio);
       double trial_sum = 0;
-      for (size_t k = 0; k < n; ++k) trial_sum += scratch.trial_ratio[k] = star.radius_ratio(k, y);
+      for (size_t k = 0; k < n; ++k) trial_sum += scratch.trial_ratio[k];
       if (!(trial_sum > sum)) continue;
+      star.qualities(y, scratch.trial);
       int trial_slivers = 0;
       bool keeps = true;
       for (size_t i = 0; i < n && keeps; ++i) {
-        const double q = scratch.trial[order[i]] = star.quality(order[i], y);
+        const double q = scratch.trial[order[i]];
         keeps = q >= worst;
         trial_slivers += q < sliver;
       }

@@ -6,8 +6,9 @@
 // in the convex hull of the gradients of the active (near-worst) tets, a
 // first step length where the linear models predict another modelled tet
 // becomes the worst, and halves it until the worst quality strictly
-// improves (a trial stops at its first tet not above the old worst) and
-// every star tet is positive by exact orient3d. The vertex moves only then:
+// improves (a trial measures the near-worst tets first, one by one, then
+// the rest together: star_points.hpp) and every star tet is positive by
+// exact orient3d. The vertex moves only then:
 // never to a worse or invalid place.
 //
 // Also here: the radius-ratio relaxation of one vertex (relax_vertex) and
@@ -21,6 +22,7 @@
 #include <span>
 #include <vector>
 
+#include "optimize/star_points.hpp"
 #include "optimize/tet_topology.hpp"
 
 namespace partet {
@@ -36,6 +38,7 @@ struct SmoothingScratch {
   std::vector<size_t> active;    // star tets near the worst
   std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)
   std::vector<uint32_t> neighbours;  // after relax_vertex(v): v's neighbours, each once
+  StarPoints points;             // the star's corners, measured together at trial points
 };
 
 // Moves v when that raises the worst quality of its star; true if it moved.

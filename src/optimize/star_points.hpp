@@ -1,0 +1,40 @@
+// The corner points of a vertex's star laid out by coordinate (structure of
+// arrays), so that the smoothing and relaxation trials measure every tet of
+// the star at a trial point in one loop the compiler vectorizes. The
+// measures are tet_quality and tet_radius_ratio bit for bit: the same
+// operations in the same order on each tet (no fused products: the build
+// has -ffp-contract=off), so the meshes do not change.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "optimize/tet_topology.hpp"
+
+namespace partet {
+
+class StarPoints {
+ public:
+  // The tets `quads` (vertex quadruples, each having v, in their vertex
+  // order) with the points of `topo`; v's point is set by place().
+  void load(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads);
+  // Puts v at x in every tet.
+  void place(const double* x);
+  size_t size() const { return n_; }
+  // tet_quality of each tet, in out[0 .. size()).
+  void qualities(double* out) const;
+  // tet_radius_ratio of each tet, in out[0 .. size()).
+  void radius_ratios(double* out) const;
+
+ private:
+  // Coordinate i of corner j of tet k: coordinates_[(3 * j + i) * n_ + k].
+  const double* column(int corner, int i) const { return &coordinates_[(3 * static_cast<size_t>(corner) + i) * n_]; }
+
+  size_t n_ = 0;
+  std::vector<double> coordinates_;
+  std::vector<uint8_t> corner_of_v_;  // per tet
+};
+
+}  // namespace partet

@@ -1,0 +1,101 @@
+// StarPoints: the batched measures of a vertex's star at trial points are
+// tet_quality and tet_radius_ratio bit for bit, at ordinary, degenerate,
+// inverted and overflowing points, with the vertex at every corner.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "check/quality.hpp"
+#include "optimize/star_points.hpp"
+#include "optimize/tet_quality.hpp"
+#include "optimize/tet_topology.hpp"
+#include "optimize_test_util.hpp"
+
+namespace partet {
+namespace {
+
+// The centre vertex of a 2 x 2 x 2 Kuhn lattice, its points jittered.
+constexpr uint32_t kCentre = 13;
+
+TetMesh jittered_lattice() {
+  TetMesh m = test::kuhn_lattice(2);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  for (double& c : m.xyz) c += jitter(rng);
+  return m;
+}
+
+std::vector<std::vector<double>> trial_points(const TetMesh& m) {
+  std::vector<std::vector<double>> points;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> near(0.5, 1.5), far(-40, 40);
+  for (int i = 0; i < 200; ++i) points.push_back({near(rng), near(rng), near(rng)});
+  for (int i = 0; i < 50; ++i) points.push_back({far(rng), far(rng), far(rng)});
+  // On a neighbour (zero-length edges), on the plane of a face, overflowing.
+  points.push_back({m.point(0)[0], m.point(0)[1], m.point(0)[2]});
+  points.push_back({m.point(4)[0], m.point(4)[1], m.point(4)[2]});
+  const double* a = m.point(1);
+  const double* b = m.point(3);
+  points.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2});
+  points.push_back({1e200, -1e200, 1e200});
+  points.push_back({1e-300, 1e-300, 1e-300});
+  return points;
+}
+
+uint64_t bits(double x) { return std::bit_cast<uint64_t>(x); }
+
+TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
+  TetMesh mesh = jittered_lattice();
+  TetTopology topo(mesh);
+  std::vector<uint32_t> star, quads;
+  topo.vertex_star(kCentre, star);
+  topo.tet_vertices(star, quads);
+  ASSERT_EQ(star.size(), 24u);
+  std::vector<int> corners(4, 0);
+  for (size_t k = 0; k < star.size(); ++k)
+    for (int j = 0; j < 4; ++j) corners[j] += quads[4 * k + j] == kCentre;
+  for (int j = 0; j < 4; ++j) EXPECT_GT(corners[j], 0) << "the centre at corner " << j;
+
+  StarPoints points;
+  points.load(topo, kCentre, quads);
+  ASSERT_EQ(points.size(), star.size());
+  std::vector<double> quality(star.size()), ratio(star.size());
+  for (const std::vector<double>& x : trial_points(mesh)) {
+    points.place(x.data());
+    points.qualities(quality.data());
+    points.radius_ratios(ratio.data());
+    for (size_t k = 0; k < star.size(); ++k) {
+      const double* p[4];
+      for (int j = 0; j < 4; ++j) p[j] = quads[4 * k + j] == kCentre ? x.data() : mesh.point(quads[4 * k + j]);
+      EXPECT_EQ(bits(quality[k]), bits(tet_quality(p[0], p[1], p[2], p[3])))
+          << "tet " << k << " at " << x[0] << " " << x[1] << " " << x[2];
+      EXPECT_EQ(bits(ratio[k]), bits(tet_radius_ratio(p[0], p[1], p[2], p[3])))
+          << "tet " << k << " at " << x[0] << " " << x[1] << " " << x[2];
+    }
+  }
+}
+
+TEST(StarPoints, ReloadingTakesTheNewStar) {
+  TetMesh mesh = jittered_lattice();
+  TetTopology topo(mesh);
+  std::vector<uint32_t> star, quads;
+  topo.vertex_star(kCentre, star);
+  topo.tet_vertices(star, quads);
+  StarPoints points;
+  points.load(topo, kCentre, quads);
+  // A corner vertex's star (one tet or a few) replaces the centre's.
+  topo.vertex_star(0, star);
+  topo.tet_vertices(star, quads);
+  points.load(topo, 0, quads);
+  ASSERT_EQ(points.size(), star.size());
+  std::vector<double> quality(star.size());
+  points.place(mesh.point(0));
+  points.qualities(quality.data());
+  for (size_t k = 0; k < star.size(); ++k) EXPECT_EQ(bits(quality[k]), bits(topo.quality(star[k])));
+}
+
+}  // namespace
+}  // namespace partet
