@@ -126,6 +126,13 @@ TetShape tet_shape(const double* p0, const double* p1, const double* p2, const d
   return s;
 }
 
+double tet_min_dihedral(const double* p0, const double* p1, const double* p2, const double* p3) {
+  const TetFrame f(p0, p1, p2, p3);
+  ExtremeDihedrals x;
+  if (!extreme_dihedrals(f, x)) return 0;
+  return dihedral(f.n[kFacePairs[x.lo][0]], f.n[kFacePairs[x.lo][1]]);
+}
+
 bool widest_dihedral_faces(const double* p0, const double* p1, const double* p2, const double* p3, int& k,
                            int& l) {
   const TetFrame f(p0, p1, p2, p3);

@@ -38,6 +38,8 @@ struct TetShape {
   double volume;  // signed: positive when orient3d(p0, p1, p2, p3) > 0
 };
 TetShape tet_shape(const double* p0, const double* p1, const double* p2, const double* p3);
+// tet_shape's min_dihedral_rad alone.
+double tet_min_dihedral(const double* p0, const double* p1, const double* p2, const double* p3);
 // The faces opposite p_k and p_l (k < l) that meet at the tet's largest
 // dihedral angle, as tet_shape finds it; their shared edge joins the other
 // two vertices. False when a face has zero area.

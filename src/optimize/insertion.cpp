@@ -398,7 +398,7 @@ AngleSummary summarize_angles(const TetTopology& topo, std::span<const uint32_t>
   AngleSummary out;
   for (size_t i = 0; i < tets.size(); i += 4) {
     const uint32_t* v = &tets[i];
-    const double a = tet_shape(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3])).min_dihedral_rad;
+    const double a = tet_min_dihedral(topo.point(v[0]), topo.point(v[1]), topo.point(v[2]), topo.point(v[3]));
     out.smallest = std::min(out.smallest, a);
     out.slivers += a < sliver;
   }

@@ -65,7 +65,7 @@ std::vector<int32_t> band_of(const TetMesh& mesh, const std::vector<int32_t>& pa
   std::vector<uint8_t> marked = cut_vertices(mesh, part_of_tet);
   for (size_t t = 0; t < mesh.num_tets(); ++t) {
     const uint32_t* v = &mesh.tets[4 * t];
-    if (tet_shape(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])).min_dihedral_rad <
+    if (tet_min_dihedral(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) <
         kBandAngle * kDegree)
       for (int i = 0; i < 4; ++i) marked[v[i]] = 1;
   }

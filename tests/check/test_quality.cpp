@@ -95,6 +95,17 @@ TEST(QualityTetShape, CoincidentPointsGiveNoNaN) {
   EXPECT_FALSE(std::isnan(s.volume));
 }
 
+TEST(QualityTetShape, MinDihedralAloneIsTetShapes) {
+  TetMesh m;
+  m.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1e-3, 0.3, 0.2, 0.1, 1, 1, 0};
+  // Regular-ish, sliver, flat, coincident corners, and both orientations.
+  const uint32_t tets[][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {1, 2, 4, 0}, {0, 1, 2, 6}, {0, 0, 1, 2}, {5, 1, 2, 3}};
+  for (const auto& t : tets) {
+    const double* p[4] = {m.point(t[0]), m.point(t[1]), m.point(t[2]), m.point(t[3])};
+    EXPECT_EQ(tet_min_dihedral(p[0], p[1], p[2], p[3]), tet_shape(p[0], p[1], p[2], p[3]).min_dihedral_rad);
+  }
+}
+
 TEST(QualityMeasure, RegularTet) {
   QualityStats q = measure_quality(regular_tet());
   EXPECT_EQ(q.tets, 1u);
