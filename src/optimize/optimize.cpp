@@ -46,6 +46,7 @@
 #include "optimize/tet_order.hpp"
 #include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
+#include "optimize/vertex_incidence.hpp"
 
 namespace partet {
 namespace {
@@ -290,8 +291,8 @@ double relaxation_floor(const TetTopology& topo) {
 // the star's points, so a vertex that stays where it is gets `settled`
 // until it or a neighbour moves: a later sweep would try the same points
 // and refuse them again.
-size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, std::vector<uint8_t>& settled,
-                        SmoothingScratch& scratch, double floor) {
+size_t relaxation_sweep(TetTopology& topo, const VertexIncidence& incidence, const std::vector<uint8_t>& frozen,
+                        std::vector<uint8_t>& settled, SmoothingScratch& scratch, double floor) {
   std::vector<uint32_t> low;
   for (uint32_t t = 0; t < topo.slots(); ++t)
     if (topo.alive(t) && topo.radius_ratio(t) < kRelaxBelow) low.push_back(t);
@@ -300,11 +301,11 @@ size_t relaxation_sweep(TetTopology& topo, const std::vector<uint8_t>& frozen, s
   size_t moved = 0;
   for (uint32_t v : vertices) {
     if (settled[v]) continue;
-    const bool move = relax_vertex(topo, v, scratch, floor);
+    const bool move = relax_vertex(topo, v, incidence.star(v), incidence.neighbours(v), scratch, floor);
     settled[v] = !move;
     if (!move) continue;
     ++moved;
-    for (uint32_t u : scratch.neighbours) settled[u] = 0;
+    for (uint32_t u : incidence.neighbours(v)) settled[u] = 0;
   }
   return moved;
 }
@@ -611,10 +612,13 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       stats.needles_split += split_needles(topo, options.needle_radius_ratio, scratch);
     stats.insertion_seconds += part.wall();
     part = Stopwatch();
-    std::vector<uint8_t> settled;
-    const double floor = relaxation_floor(topo);
-    for (int sweep = 0; sweep < options.relaxation_sweeps; ++sweep)
-      stats.vertices_relaxed += relaxation_sweep(topo, fixed, settled, scratch, floor);
+    if (options.relaxation_sweeps > 0) {
+      std::vector<uint8_t> settled;
+      const double floor = relaxation_floor(topo);
+      const VertexIncidence incidence(topo);
+      for (int sweep = 0; sweep < options.relaxation_sweeps; ++sweep)
+        stats.vertices_relaxed += relaxation_sweep(topo, incidence, fixed, settled, scratch, floor);
+    }
     stats.relaxation_seconds += part.wall();
     topo.compact();
   }

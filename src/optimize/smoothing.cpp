@@ -122,7 +122,7 @@ void least_norm_on_segment(const double* a, const double* b, double d[3]) {
 // The volume-weighted mean of the circumcentres of the positive tets of
 // `star` (the optimal Delaunay triangulation update of Chen and Xu), in
 // out; false when no tet is positive.
-bool odt_point(const TetTopology& topo, const std::vector<uint32_t>& star, double out[3]) {
+bool odt_point(const TetTopology& topo, std::span<const uint32_t> star, double out[3]) {
   double sum[3] = {0, 0, 0}, volume = 0;
   for (uint32_t t : star) {
     const uint32_t* v = topo.tet(t);
@@ -295,15 +295,12 @@ void least_norm_direction(const std::vector<double>& gradient, const std::vector
   }
 }
 
-bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor) {
-  topo.vertex_star(v, scratch.star);
-  if (scratch.star.empty()) return false;
-  topo.tet_vertices(scratch.star, scratch.quads);
+bool relax_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> tets, std::span<const uint32_t> around,
+                  SmoothingScratch& scratch, double floor) {
+  if (tets.empty()) return false;
+  topo.tet_vertices(tets, scratch.quads);
   const Star star(topo, v, scratch.quads, scratch.points);
-  const size_t n = scratch.star.size();
-  // The neighbours, each once.
-  std::vector<uint32_t>& around = scratch.neighbours;
-  topo.star_neighbours(v, scratch.star, around);
+  const size_t n = tets.size();
   double centroid[3] = {0, 0, 0};
   for (uint32_t u : around)
     for (int i = 0; i < 3; ++i) centroid[i] += topo.point(u)[i] / static_cast<double>(around.size());
@@ -312,7 +309,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
   double worst = std::numeric_limits<double>::infinity();
   int slivers = 0;
   for (size_t k = 0; k < n; ++k) {
-    const double q = topo.quality(scratch.star[k]);
+    const double q = topo.quality(tets[k]);
     worst = std::min(worst, q);
     slivers += q < sliver;
   }
@@ -327,15 +324,15 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
   std::iota(order.begin(), order.end(), size_t{0});
   std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(std::min<size_t>(2, n)), order.end(),
                     [&](size_t i, size_t j) {
-                      const double qi = topo.quality(scratch.star[i]), qj = topo.quality(scratch.star[j]);
+                      const double qi = topo.quality(tets[i]), qj = topo.quality(tets[j]);
                       return qi != qj ? qi < qj : i < j;
                     });
   const double* x = topo.point(v);
   // The star's radius ratio sum at x.
   double sum = 0;
-  for (size_t k = 0; k < n; ++k) sum += topo.radius_ratio(scratch.star[k]);
+  for (size_t k = 0; k < n; ++k) sum += topo.radius_ratio(tets[k]);
   double odt[3];
-  const bool has_odt = odt_point(topo, scratch.star, odt);
+  const bool has_odt = odt_point(topo, tets, odt);
   const double* targets[2] = {odt, centroid};
   // The radius ratios first: most refused trials raise no radius ratio
   // (femur r1: 156,000 of 189,000), and then no quality is measured; then
@@ -358,9 +355,9 @@ bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, doub
         trial_slivers += q < sliver;
       }
       if (!keeps || trial_slivers > slivers || !star.positive(y)) continue;
-      topo.move_vertex(v, y, scratch.star);
+      topo.move_vertex(v, y, tets);
       // The star's measures at y are the trial's: no tet is measured again.
-      for (size_t k = 0; k < n; ++k) topo.keep_measures(scratch.star[k], scratch.trial[k], scratch.trial_ratio[k]);
+      for (size_t k = 0; k < n; ++k) topo.keep_measures(tets[k], scratch.trial[k], scratch.trial_ratio[k]);
       return true;
     }
   return false;

@@ -37,7 +37,6 @@ struct SmoothingScratch {
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
   std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)
-  std::vector<uint32_t> neighbours;  // after relax_vertex(v): v's neighbours, each once
   StarPoints points;             // the star's corners, measured together at trial points
 };
 
@@ -63,9 +62,11 @@ bool smooth_new_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> 
 // +infinity the star's worst tet never drops; below it, a star whose worst
 // tet is above the floor may trade some of that margin for radius ratio
 // (the optimizer passes the quality of its relaxation floor angle, or of
-// the mesh's smallest angle when that is larger: optimize.cpp). True if v
-// moved.
-bool relax_vertex(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor);
+// the mesh's smallest angle when that is larger: optimize.cpp). `star` is
+// v's tets, `neighbours` the vertices sharing one with v, ascending, each
+// once (vertex_incidence.hpp). True if v moved.
+bool relax_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> star, std::span<const uint32_t> neighbours,
+                  SmoothingScratch& scratch, double floor);
 
 // The point of least norm in the convex hull of the vectors gradient[3k ..
 // 3k + 2] for k in `active` (not empty), in d: the steepest common ascent

@@ -15,6 +15,7 @@
 #include "optimize/optimize.hpp"
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_quality.hpp"
+#include "optimize/vertex_incidence.hpp"
 #include "optimize_test_util.hpp"
 #include "test_support.hpp"
 
@@ -137,6 +138,12 @@ TetMesh jittered_coned_cube(std::mt19937& rng) {
   return m;
 }
 
+// relax_vertex with v's star and neighbours gathered from the topology.
+bool relax(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor) {
+  const VertexIncidence incidence(topo);
+  return relax_vertex(topo, v, incidence.star(v), incidence.neighbours(v), scratch, floor);
+}
+
 // Relaxation takes a perturbed centre to (or towards) its neighbours'
 // centroid, raising the radius ratios without lowering the worst tet, and
 // leaves a centre already there alone.
@@ -145,14 +152,14 @@ TEST(Smoothing, RelaxationRaisesTheRadiusRatiosOnly) {
   const double worst = worst_quality(m), sum = radius_ratio_sum(m);
   TetTopology topo(m);
   SmoothingScratch scratch;
-  EXPECT_TRUE(relax_vertex(topo, 8, scratch, kNoFloor));
+  EXPECT_TRUE(relax(topo, 8, scratch, kNoFloor));
   EXPECT_TRUE(all_positive(m));
   EXPECT_GE(worst_quality(m), worst);
   EXPECT_GT(radius_ratio_sum(m), sum);
   // The neighbours are the 8 corners: their centroid is the cube's centre.
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(m.xyz[24 + i], 0.5, 1e-12);
   EXPECT_EQ(topo.quality(0), tet_quality(m.point(m.tets[0]), m.point(m.tets[1]), m.point(m.tets[2]), m.point(m.tets[3])));
-  EXPECT_FALSE(relax_vertex(topo, 8, scratch, kNoFloor));
+  EXPECT_FALSE(relax(topo, 8, scratch, kNoFloor));
 }
 
 // On jittered cubes with a random centre: relaxation never lowers the worst
@@ -177,7 +184,7 @@ TEST(Smoothing, RelaxationKeepsTheWorstTet) {
     const std::vector<double> before = m.xyz;
     TetTopology topo(m);
     SmoothingScratch scratch;
-    const bool relaxed = relax_vertex(topo, 8, scratch, kNoFloor);
+    const bool relaxed = relax(topo, 8, scratch, kNoFloor);
     moved += relaxed;
     EXPECT_TRUE(all_positive(m)) << "trial " << trial;
     EXPECT_GE(worst_quality(m), worst) << "trial " << trial;
@@ -206,9 +213,9 @@ TEST(Smoothing, RelaxationLowersTheWorstTetOnlyToTheFloor) {
     TetMesh kept = m;
     TetTopology kept_topo(kept);
     SmoothingScratch scratch;
-    const bool moved_without = relax_vertex(kept_topo, 8, scratch, kNoFloor);
+    const bool moved_without = relax(kept_topo, 8, scratch, kNoFloor);
     TetTopology topo(m);
-    const bool moved = relax_vertex(topo, 8, scratch, floor);
+    const bool moved = relax(topo, 8, scratch, floor);
     EXPECT_TRUE(all_positive(m)) << "trial " << trial;
     EXPECT_GE(worst_quality(m), std::min(worst, floor)) << "trial " << trial;
     if (moved) {

@@ -15,6 +15,7 @@
 #include "optimize/smoothing.hpp"
 #include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
+#include "optimize/vertex_incidence.hpp"
 #include "optimize_test_util.hpp"
 
 namespace partet {
@@ -187,6 +188,33 @@ TEST(TetTopology, StarNeighboursComeOnceAscending) {
   topo.vertex_star(13, star);
   topo.star_neighbours(13, star, got);
   EXPECT_EQ(got.size(), 14u);  // the centre of a Kuhn lattice has 14 neighbours
+}
+
+// The incidence gathered in one pass lists each vertex's star (ascending
+// slots) and neighbours as the star search and star_neighbours find them,
+// dead slots left out.
+TEST(TetTopology, VertexIncidenceIsTheStarsAndNeighbours) {
+  TetMesh m = lattice();
+  TetTopology topo(m);
+  std::vector<uint32_t> star, created;
+  topo.vertex_star(13, star);
+  const double* p = topo.point(13);
+  const double inside[3] = {p[0] + 0.01, p[1] - 0.02, p[2] + 0.015};
+  const uint32_t w = topo.add_vertex(inside, 0);
+  topo.replace(star, cone_tets(topo, star, w), created);
+  const VertexIncidence incidence(topo);
+  std::vector<uint32_t> neighbours;
+  for (uint32_t v = 0; v < topo.num_vertices(); ++v) {
+    topo.vertex_star(v, star);
+    std::sort(star.begin(), star.end());
+    EXPECT_TRUE(std::equal(star.begin(), star.end(), incidence.star(v).begin(), incidence.star(v).end())) << v;
+    topo.star_neighbours(v, star, neighbours);
+    EXPECT_TRUE(std::equal(neighbours.begin(), neighbours.end(), incidence.neighbours(v).begin(),
+                           incidence.neighbours(v).end()))
+        << v;
+  }
+  EXPECT_TRUE(incidence.star(13).empty());
+  EXPECT_EQ(incidence.neighbours(w).size(), 14u);
 }
 
 // Per alive tet: whether it is unchanged since change count `count`.
