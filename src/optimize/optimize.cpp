@@ -36,6 +36,7 @@
 #include "core/error.hpp"
 #include "core/timer.hpp"
 #include "optimize/collapse.hpp"
+#include "optimize/failed_edges.hpp"
 #include "optimize/failure_record.hpp"
 #include "optimize/flips.hpp"
 #include "optimize/insertion.hpp"
@@ -117,8 +118,10 @@ void count(const Flip& flip, OptimizeStats& stats) {
   }
 }
 
-// The best improving flip around tet t; false when there is none.
-bool best_flip(const TetTopology& topo, uint32_t t, Flip& best) {
+// The best improving flip around tet t; false when there is none. With
+// `failed_edges`, the edge removals it knows are not searched, and those
+// that find nothing against their ring's worst tet are added.
+bool best_flip(const TetTopology& topo, uint32_t t, Flip& best, FailedEdges* failed_edges = nullptr) {
   Flip candidate;
   bool found = false;
   auto consider = [&](bool valid) {
@@ -131,7 +134,13 @@ bool best_flip(const TetTopology& topo, uint32_t t, Flip& best) {
   // Each search looks only for flips beating the best one so far.
   double beat = -std::numeric_limits<double>::infinity();
   for (const auto& e : kTetEdges) {
-    consider(edge_removal(topo, t, e[0], e[1], candidate, &beat));
+    const uint32_t a = topo.tet(t)[e[0]], b = topo.tet(t)[e[1]];
+    if (failed_edges && failed_edges->known(topo, a, b)) continue;
+    const bool removal = edge_removal(topo, t, e[0], e[1], candidate, &beat);
+    // Before any candidate the bar is the ring's worst tet: a failure then
+    // holds for every later bar.
+    if (!removal && !found && failed_edges) failed_edges->add(topo, a, b);
+    consider(removal);
     if (found) beat = best.new_quality;
   }
   for (uint32_t f = 0; f < 4; ++f) {
@@ -142,16 +151,18 @@ bool best_flip(const TetTopology& topo, uint32_t t, Flip& best) {
 }
 
 // Applies the best improving flip around tet t; the new tets go to `created`.
-bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::vector<uint32_t>& created) {
+bool improve_topology(TetTopology& topo, uint32_t t, OptimizeStats& stats, std::vector<uint32_t>& created,
+                      FailedEdges& failed_edges) {
   Flip best;
-  if (!best_flip(topo, t, best)) return false;
+  if (!best_flip(topo, t, best, &failed_edges)) return false;
   topo.replace(best.cavity(), best.replacement(), created);
   count(best, stats);
   return true;
 }
 
 // Step 1 of a pass; the number of flips applied.
-size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats, FailedFlips& failed) {
+size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats, FailedFlips& failed,
+                     FailedEdges& failed_edges) {
   std::vector<uint32_t> work = tets_below(topo, target);
   const size_t cap = kWorkPerBadTet * work.size();
   std::vector<uint32_t> created;
@@ -160,7 +171,7 @@ size_t topology_pass(TetTopology& topo, double target, OptimizeStats& stats, Fai
     const uint32_t t = work[i];
     if (!topo.alive(t) || topo.quality(t) >= target || failed.known(topo, t)) continue;
     created.clear();
-    if (!improve_topology(topo, t, stats, created)) {
+    if (!improve_topology(topo, t, stats, created, failed_edges)) {
       failed.add(topo, t);
       continue;
     }
@@ -578,6 +589,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     const double target = quality_of_angle(options.quality_target_deg);
     SmoothingScratch scratch;
     FailedFlips failed_flips;
+    FailedEdges failed_edges(topo.slots() / 4);
     FailedSplits failed_splits(topo.slots() / 4);
     RefusedCollapses refused_collapses;
     for (int pass = 0; pass < options.passes; ++pass) {
@@ -585,7 +597,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
       part = Stopwatch();
       const double pass_target =
           options.lower_later_targets ? std::min(target, quality_of_angle(later_pass_angle(pass))) : target;
-      const size_t flips = topology_pass(topo, pass_target, stats, failed_flips);
+      const size_t flips = topology_pass(topo, pass_target, stats, failed_flips, failed_edges);
       stats.topology_seconds += part.wall();
       part = Stopwatch();
       const bool last_of_several = options.passes > 1 && pass + 1 == options.passes;
