@@ -51,13 +51,10 @@ class Star {
     const int j = t[0] == v_ ? 0 : t[1] == v_ ? 1 : t[2] == v_ ? 2 : 3;
     return tet_quality_gradient(p, j, gradient);
   }
+  // True when every star tet is positive (exact orient3d) with v at x.
   bool positive(const double* x) const {
-    for (size_t k = 0; k < n_; ++k) {
-      const double* p[4];
-      points(k, x, p);
-      if (orient3d(p[0], p[1], p[2], p[3]) <= 0) return false;
-    }
-    return true;
+    points_.place(x);
+    return points_.all_positive();
   }
   // True when every star tet's quality with v at x exceeds `bar`; the tets
   // of `first` are tried one by one before the others, measured together:

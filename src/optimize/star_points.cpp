@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "core/predicates.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
@@ -114,6 +115,38 @@ void radius_ratio_kernel(const Columns& p, size_t n, double* __restrict out) {
   }
 }
 
+// orient3d's filter (predicates.hpp) on (p0, p1, p2, p3), per tet: 1 or -1
+// when it is certain of the sign, 0 when the exact path must decide.
+void orientation_kernel(const Columns& p, size_t n, double* __restrict out) {
+  const double* __restrict x0 = p.c[0];
+  const double* __restrict y0 = p.c[1];
+  const double* __restrict z0 = p.c[2];
+  const double* __restrict x1 = p.c[3];
+  const double* __restrict y1 = p.c[4];
+  const double* __restrict z1 = p.c[5];
+  const double* __restrict x2 = p.c[6];
+  const double* __restrict y2 = p.c[7];
+  const double* __restrict z2 = p.c[8];
+  const double* __restrict x3 = p.c[9];
+  const double* __restrict y3 = p.c[10];
+  const double* __restrict z3 = p.c[11];
+  for (size_t k = 0; k < n; ++k) {
+    const double ux = x1[k] - x0[k], uy = y1[k] - y0[k], uz = z1[k] - z0[k];
+    const double vx = x2[k] - x0[k], vy = y2[k] - y0[k], vz = z2[k] - z0[k];
+    const double wx = x3[k] - x0[k], wy = y3[k] - y0[k], wz = z3[k] - z0[k];
+    const double p1 = vy * wz, p2 = vz * wy;
+    const double p3 = vz * wx, p4 = vx * wz;
+    const double p5 = vx * wy, p6 = vy * wx;
+    const double det = (ux * (p1 - p2) + uy * (p3 - p4)) + uz * (p5 - p6);
+    const double aux = std::fabs(ux), auy = std::fabs(uy), auz = std::fabs(uz);
+    const double permanent = (aux * (std::fabs(p1) + std::fabs(p2)) + auy * (std::fabs(p3) + std::fabs(p4))) +
+                             auz * (std::fabs(p5) + std::fabs(p6));
+    const double bound =
+        detail::kOrient3dBound * permanent + (aux + auy + auz + 1) * detail::kUnderflowSlack;
+    out[k] = det > bound ? 1.0 : (det < -bound ? -1.0 : 0.0);
+  }
+}
+
 }  // namespace
 
 void StarPoints::load(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads) {
@@ -148,6 +181,23 @@ void StarPoints::radius_ratios(double* out) const {
   Columns p;
   for (int c = 0; c < 12; ++c) p.c[c] = column(c / 3, c % 3);
   radius_ratio_kernel(p, n_, out);
+}
+
+
+bool StarPoints::all_positive() const {
+  Columns p;
+  for (int c = 0; c < 12; ++c) p.c[c] = column(c / 3, c % 3);
+  signs_.resize(n_);
+  orientation_kernel(p, n_, signs_.data());
+  for (size_t k = 0; k < n_; ++k) {
+    if (signs_[k] > 0) continue;
+    if (signs_[k] < 0) return false;
+    double q[4][3];
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 3; ++i) q[j][i] = p.c[3 * j + i][k];
+    if (detail::orient3d_exact(q[0], q[1], q[2], q[3]) <= 0) return false;
+  }
+  return true;
 }
 
 }  // namespace partet

@@ -3,7 +3,9 @@
 // the star at a trial point in one loop the compiler vectorizes. The
 // measures are tet_quality and tet_radius_ratio bit for bit: the same
 // operations in the same order on each tet (no fused products: the build
-// has -ffp-contract=off), so the meshes do not change.
+// has -ffp-contract=off), so the meshes do not change. The orientations
+// are orient3d's: its filter on every tet, its exact path where that is
+// not certain.
 #pragma once
 
 #include <cstddef>
@@ -27,6 +29,9 @@ class StarPoints {
   void qualities(double* out) const;
   // tet_radius_ratio of each tet, in out[0 .. size()).
   void radius_ratios(double* out) const;
+  // True when orient3d is positive for every tet (its filter on all at
+  // once, the exact path for the uncertain ones).
+  bool all_positive() const;
 
  private:
   // Coordinate i of corner j of tet k: coordinates_[(3 * j + i) * n_ + k].
@@ -35,6 +40,7 @@ class StarPoints {
   size_t n_ = 0;
   std::vector<double> coordinates_;
   std::vector<uint8_t> corner_of_v_;  // per tet
+  mutable std::vector<double> signs_;  // all_positive's filter, per tet
 };
 
 }  // namespace partet

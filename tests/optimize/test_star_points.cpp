@@ -1,6 +1,7 @@
 // StarPoints: the batched measures of a vertex's star at trial points are
-// tet_quality and tet_radius_ratio bit for bit, at ordinary, degenerate,
-// inverted and overflowing points, with the vertex at every corner.
+// tet_quality and tet_radius_ratio bit for bit, and its orientations
+// orient3d's, at ordinary, degenerate, inverted and overflowing points,
+// with the vertex at every corner.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "check/quality.hpp"
+#include "core/predicates.hpp"
 #include "optimize/star_points.hpp"
 #include "optimize/tet_quality.hpp"
 #include "optimize/tet_topology.hpp"
@@ -40,6 +42,8 @@ std::vector<std::vector<double>> trial_points(const TetMesh& m) {
   const double* a = m.point(1);
   const double* b = m.point(3);
   points.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2});
+  // The centre's own point: every tet positive.
+  points.push_back({m.point(kCentre)[0], m.point(kCentre)[1], m.point(kCentre)[2]});
   points.push_back({1e200, -1e200, 1e200});
   points.push_back({1e-300, 1e-300, 1e-300});
   return points;
@@ -63,10 +67,26 @@ TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
   points.load(topo, kCentre, quads);
   ASSERT_EQ(points.size(), star.size());
   std::vector<double> quality(star.size()), ratio(star.size());
-  for (const std::vector<double>& x : trial_points(mesh)) {
+  std::vector<std::vector<double>> trials = trial_points(mesh);
+  // The centroid of the face opposite the centre in the first tet: within
+  // rounding of its plane, where orient3d's filter leaves the sign to the
+  // exact path.
+  std::vector<double> on_face(3, 0.0);
+  for (int j = 0; j < 4; ++j)
+    if (quads[j] != kCentre)
+      for (int i = 0; i < 3; ++i) on_face[i] += mesh.point(quads[j])[i] / 3;
+  trials.push_back(on_face);
+  for (const std::vector<double>& x : trials) {
     points.place(x.data());
     points.qualities(quality.data());
     points.radius_ratios(ratio.data());
+    bool positive = true;
+    for (size_t k = 0; k < star.size(); ++k) {
+      const double* q[4];
+      for (int j = 0; j < 4; ++j) q[j] = quads[4 * k + j] == kCentre ? x.data() : mesh.point(quads[4 * k + j]);
+      positive = positive && orient3d(q[0], q[1], q[2], q[3]) > 0;
+    }
+    EXPECT_EQ(points.all_positive(), positive) << "at " << x[0] << " " << x[1] << " " << x[2];
     for (size_t k = 0; k < star.size(); ++k) {
       const double* p[4];
       for (int j = 0; j < 4; ++j) p[j] = quads[4 * k + j] == kCentre ? x.data() : mesh.point(quads[4 * k + j]);
