@@ -302,7 +302,7 @@ double relaxation_floor(const TetTopology& topo) {
 // the star's points, so a vertex that stays where it is gets `settled`
 // until it or a neighbour moves: a later sweep would try the same points
 // and refuse them again.
-size_t relaxation_sweep(TetTopology& topo, const VertexIncidence& incidence, const std::vector<uint8_t>& frozen,
+size_t relaxation_sweep(TetTopology& topo, VertexIncidence& incidence, const std::vector<uint8_t>& frozen,
                         std::vector<uint8_t>& settled, SmoothingScratch& scratch, double floor) {
   std::vector<uint32_t> low;
   for (uint32_t t = 0; t < topo.slots(); ++t)
@@ -627,7 +627,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     if (options.relaxation_sweeps > 0) {
       std::vector<uint8_t> settled;
       const double floor = relaxation_floor(topo);
-      const VertexIncidence incidence(topo);
+      VertexIncidence incidence(topo);
       for (int sweep = 0; sweep < options.relaxation_sweeps; ++sweep)
         stats.vertices_relaxed += relaxation_sweep(topo, incidence, fixed, settled, scratch, floor);
     }

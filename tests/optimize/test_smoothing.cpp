@@ -140,7 +140,7 @@ TetMesh jittered_coned_cube(std::mt19937& rng) {
 
 // relax_vertex with v's star and neighbours gathered from the topology.
 bool relax(TetTopology& topo, uint32_t v, SmoothingScratch& scratch, double floor) {
-  const VertexIncidence incidence(topo);
+  VertexIncidence incidence(topo);
   return relax_vertex(topo, v, incidence.star(v), incidence.neighbours(v), scratch, floor);
 }
 

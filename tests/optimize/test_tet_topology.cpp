@@ -202,7 +202,7 @@ TEST(TetTopology, VertexIncidenceIsTheStarsAndNeighbours) {
   const double inside[3] = {p[0] + 0.01, p[1] - 0.02, p[2] + 0.015};
   const uint32_t w = topo.add_vertex(inside, 0);
   topo.replace(star, cone_tets(topo, star, w), created);
-  const VertexIncidence incidence(topo);
+  VertexIncidence incidence(topo);
   std::vector<uint32_t> neighbours;
   for (uint32_t v = 0; v < topo.num_vertices(); ++v) {
     topo.vertex_star(v, star);
