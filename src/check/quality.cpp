@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <vector>
 
@@ -143,6 +144,92 @@ bool widest_dihedral_faces(const double* p0, const double* p1, const double* p2,
   return true;
 }
 
+namespace {
+
+// measure_quality's tets go through blocks of this many, their corners by
+// coordinate, so that one loop the compiler vectorizes takes each tet's
+// measures (the expressions of TetFrame, extreme_dihedrals,
+// radius_ratio_of and edge_ratio_of in the same order: the same bits) and
+// a second adds them up in tet order.
+constexpr size_t kShapeBlock = 256;
+
+struct ShapeBlock {
+  size_t n = 0;
+  double corner[12][kShapeBlock];  // coordinate i of corner j at 3 j + i
+  double cos_lo[kShapeBlock], cos_hi[kShapeBlock], lo[kShapeBlock], hi[kShapeBlock], faces[kShapeBlock];
+  double radius_ratio[kShapeBlock], edge_ratio[kShapeBlock], six_volume[kShapeBlock];
+  const double* points[kShapeBlock][4];  // the tet's corners, for the mesh's extreme angles
+};
+
+void measure_block(ShapeBlock& s) {
+  const double* __restrict x0 = s.corner[0];
+  const double* __restrict y0 = s.corner[1];
+  const double* __restrict z0 = s.corner[2];
+  const double* __restrict x1 = s.corner[3];
+  const double* __restrict y1 = s.corner[4];
+  const double* __restrict z1 = s.corner[5];
+  const double* __restrict x2 = s.corner[6];
+  const double* __restrict y2 = s.corner[7];
+  const double* __restrict z2 = s.corner[8];
+  const double* __restrict x3 = s.corner[9];
+  const double* __restrict y3 = s.corner[10];
+  const double* __restrict z3 = s.corner[11];
+  double* __restrict cos_lo = s.cos_lo;
+  double* __restrict cos_hi = s.cos_hi;
+  double* __restrict lo = s.lo;
+  double* __restrict hi = s.hi;
+  double* __restrict faces = s.faces;
+  double* __restrict radius_ratio = s.radius_ratio;
+  double* __restrict edge_ratio = s.edge_ratio;
+  double* __restrict six_volume = s.six_volume;
+  for (size_t k = 0; k < s.n; ++k) {
+    const double ax = x1[k] - x0[k], ay = y1[k] - y0[k], az = z1[k] - z0[k];
+    const double bx = x2[k] - x0[k], by = y2[k] - y0[k], bz = z2[k] - z0[k];
+    const double cx = x3[k] - x0[k], cy = y3[k] - y0[k], cz = z3[k] - z0[k];
+    const double ux = cx - ax, uy = cy - ay, uz = cz - az;  // c - a
+    const double wx = bx - ax, wy = by - ay, wz = bz - az;  // b - a
+    const double n[4][3] = {{uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx},
+                            {by * cz - bz * cy, bz * cx - bx * cz, bx * cy - by * cx},
+                            {cy * az - cz * ay, cz * ax - cx * az, cx * ay - cy * ax},
+                            {ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx}};
+    double len[4];
+    for (int f = 0; f < 4; ++f) len[f] = std::sqrt(n[f][0] * n[f][0] + n[f][1] * n[f][1] + n[f][2] * n[f][2]);
+    faces[k] = (len[0] > 0) & (len[1] > 0) & (len[2] > 0) & (len[3] > 0) ? 1.0 : 0.0;
+    double low = -2, high = 2, low_pair = 0, high_pair = 0;
+    for (int e = 0; e < 6; ++e) {
+      const int f = kFacePairs[e][0], g = kFacePairs[e][1];
+      const double cosine = -(n[f][0] * n[g][0] + n[f][1] * n[g][1] + n[f][2] * n[g][2]) / (len[f] * len[g]);
+      low_pair = cosine > low ? e : low_pair;
+      low = cosine > low ? cosine : low;
+      high_pair = cosine < high ? e : high_pair;
+      high = cosine < high ? cosine : high;
+    }
+    cos_lo[k] = low, cos_hi[k] = high, lo[k] = low_pair, hi[k] = high_pair;
+    const double d = ax * n[1][0] + ay * n[1][1] + az * n[1][2];
+    six_volume[k] = d;
+    const double area_sum = len[0] + len[1] + len[2] + len[3];
+    const double aa = ax * ax + ay * ay + az * az, bb = bx * bx + by * by + bz * bz, cc = cx * cx + cy * cy + cz * cz;
+    const double ix = bb * n[2][0] + cc * n[3][0], iy = bb * n[2][1] + cc * n[3][1], iz = bb * n[2][2] + cc * n[3][2];
+    const double sx = aa * n[1][0] + ix, sy = aa * n[1][1] + iy, sz = aa * n[1][2] + iz;
+    const double denominator = area_sum * std::sqrt(sx * sx + sy * sy + sz * sz);
+    const double ratio = 6 * d * d / denominator;
+    radius_ratio[k] = (d != 0 && denominator > 0) ? (ratio < 1.0 ? ratio : 1.0) : 0.0;
+    const double ex = bx - ax, ey = by - ay, ez = bz - az;  // b - a
+    const double fx = cx - ax, fy = cy - ay, fz = cz - az;  // c - a
+    const double gx = cx - bx, gy = cy - by, gz = cz - bz;  // c - b
+    const double edges[6] = {aa, bb, cc, ex * ex + ey * ey + ez * ez, fx * fx + fy * fy + fz * fz,
+                             gx * gx + gy * gy + gz * gz};
+    double shortest = edges[0], longest = edges[0];
+    for (int e = 1; e < 6; ++e) {
+      shortest = edges[e] < shortest ? edges[e] : shortest;
+      longest = edges[e] > longest ? edges[e] : longest;
+    }
+    edge_ratio[k] = shortest > 0 ? std::sqrt(longest / shortest) : std::numeric_limits<double>::infinity();
+  }
+}
+
+}  // namespace
+
 QualityStats measure_quality(const TetMesh& mesh) {
   QualityStats q;
   const size_t num_vertices = mesh.num_vertices();
@@ -161,6 +248,47 @@ QualityStats measure_quality(const TetMesh& mesh) {
   double rr_min = 1, edge_ratio_max = 0;
   double rr_sum = 0, edge_ratio_sum = 0;
   CompensatedSum volume;
+  const auto block = std::make_unique<ShapeBlock>();
+  ShapeBlock& s = *block;
+  const auto add_up = [&] {
+    measure_block(s);
+    for (size_t k = 0; k < s.n; ++k) {
+      if (s.faces[k] != 0) {
+        q.dihedral_under_5 += s.cos_lo[k] > cos5;
+        q.dihedral_under_10 += s.cos_lo[k] > cos10;
+        q.dihedral_under_20 += s.cos_lo[k] > cos20;
+        if (s.cos_lo[k] > cos_min_angle || s.cos_hi[k] < cos_max_angle) {
+          const double* const* p = s.points[k];
+          const TetFrame f(p[0], p[1], p[2], p[3]);
+          if (s.cos_lo[k] > cos_min_angle) {
+            cos_min_angle = s.cos_lo[k];
+            const int e = static_cast<int>(s.lo[k]);
+            min_pair[0] = f.n[kFacePairs[e][0]];
+            min_pair[1] = f.n[kFacePairs[e][1]];
+          }
+          if (s.cos_hi[k] < cos_max_angle) {
+            cos_max_angle = s.cos_hi[k];
+            const int e = static_cast<int>(s.hi[k]);
+            max_pair[0] = f.n[kFacePairs[e][0]];
+            max_pair[1] = f.n[kFacePairs[e][1]];
+          }
+        }
+      } else {
+        flat = true;
+        ++q.dihedral_under_5;
+        ++q.dihedral_under_10;
+        ++q.dihedral_under_20;
+      }
+      const double rr = s.radius_ratio[k];
+      rr_min = std::min(rr_min, rr);
+      rr_sum += rr;
+      radius_ratio.push_back(rr);
+      edge_ratio_max = std::max(edge_ratio_max, s.edge_ratio[k]);
+      edge_ratio_sum += s.edge_ratio[k];
+      volume.add(s.six_volume[k] / 6);
+    }
+    s.n = 0;
+  };
   for (size_t t = 0; t < num_tets; ++t) {
     const uint32_t* v = &mesh.tets[4 * t];
     if (v[0] >= num_vertices || v[1] >= num_vertices || v[2] >= num_vertices ||
@@ -169,37 +297,13 @@ QualityStats measure_quality(const TetMesh& mesh) {
     const double* p[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])};
     if (!finite_point(p[0]) || !finite_point(p[1]) || !finite_point(p[2]) || !finite_point(p[3]))
       continue;
-    const TetFrame f(p[0], p[1], p[2], p[3]);
-    ExtremeDihedrals x;
-    if (extreme_dihedrals(f, x)) {
-      q.dihedral_under_5 += x.cos_lo > cos5;
-      q.dihedral_under_10 += x.cos_lo > cos10;
-      q.dihedral_under_20 += x.cos_lo > cos20;
-      if (x.cos_lo > cos_min_angle) {
-        cos_min_angle = x.cos_lo;
-        min_pair[0] = f.n[kFacePairs[x.lo][0]];
-        min_pair[1] = f.n[kFacePairs[x.lo][1]];
-      }
-      if (x.cos_hi < cos_max_angle) {
-        cos_max_angle = x.cos_hi;
-        max_pair[0] = f.n[kFacePairs[x.hi][0]];
-        max_pair[1] = f.n[kFacePairs[x.hi][1]];
-      }
-    } else {
-      flat = true;
-      ++q.dihedral_under_5;
-      ++q.dihedral_under_10;
-      ++q.dihedral_under_20;
+    for (int j = 0; j < 4; ++j) {
+      s.points[s.n][j] = p[j];
+      for (int i = 0; i < 3; ++i) s.corner[3 * j + i][s.n] = p[j][i];
     }
-    const double rr = radius_ratio_of(f);
-    rr_min = std::min(rr_min, rr);
-    rr_sum += rr;
-    radius_ratio.push_back(rr);
-    const double edge_ratio = edge_ratio_of(f);
-    edge_ratio_max = std::max(edge_ratio_max, edge_ratio);
-    edge_ratio_sum += edge_ratio;
-    volume.add(dot(f.a, f.n[1]) / 6);
+    if (++s.n == kShapeBlock) add_up();
   }
+  add_up();
 
   q.tets = radius_ratio.size();
   if (q.tets == 0) return q;

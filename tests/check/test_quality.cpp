@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 
+#include "check/compensated_sum.hpp"
 #include "check/quality.hpp"
 #include "test_support.hpp"
 
@@ -170,6 +172,66 @@ TEST(QualityMeasure, FirstPercentileAndSmallAngleCounts) {
   EXPECT_LT(three_in_300.radius_ratio_p01, 0.05);
   EXPECT_GT(three_in_300.radius_ratio_p01, three_in_300.radius_ratio_min);
   EXPECT_EQ(three_in_300.dihedral_under_5, 3u);
+}
+
+// Over blocks of tets (more than one, a partial last one), flat and
+// coincident tets among them, the mesh's measure is the per-tet shapes
+// added up in tet order: the same bits.
+TEST(QualityMeasure, IsThePerTetShapesAddedUp) {
+  TetMesh m;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for (int i = 0; i < 300; ++i) m.xyz.insert(m.xyz.end(), {coordinate(rng), coordinate(rng), coordinate(rng)});
+  m.xyz.insert(m.xyz.end(), {0, 0, 0, 1, 0, 0, 2, 0, 0});  // collinear: flat tets
+  std::uniform_int_distribution<uint32_t> vertex(0, 299);
+  for (int t = 0; t < 700; ++t) {
+    const uint32_t a = vertex(rng), b = (a + 1 + vertex(rng) % 99) % 300, c = (b + 1 + vertex(rng) % 99) % 300,
+                   d = (c + 1 + vertex(rng) % 99) % 300;  // four different points
+    m.tets.insert(m.tets.end(), {a, b, c, d});
+  }
+  m.tets.insert(m.tets.end(), {300, 301, 302, 7, 4, 4, 5, 6});
+  const QualityStats q = measure_quality(m);
+  size_t under[3] = {0, 0, 0};
+  double rr_sum = 0, rr_min = 1, edge_sum = 0, edge_max = 0, smallest = 7, largest = -1;
+  CompensatedSum volume;
+  for (size_t t = 0; t < m.num_tets(); ++t) {
+    const uint32_t* v = &m.tets[4 * t];
+    const TetShape s = tet_shape(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+    const double degrees[3] = {5, 10, 20};
+    for (int i = 0; i < 3; ++i) under[i] += rad_to_deg(s.min_dihedral_rad) < degrees[i];
+    rr_sum += s.radius_ratio;
+    rr_min = std::min(rr_min, s.radius_ratio);
+    edge_sum += s.edge_ratio;
+    edge_max = std::max(edge_max, s.edge_ratio);
+    smallest = std::min(smallest, s.min_dihedral_rad);
+    largest = std::max(largest, s.max_dihedral_rad);
+    volume.add(s.volume);
+  }
+  EXPECT_EQ(q.tets, m.num_tets());
+  EXPECT_EQ(q.dihedral_under_5, under[0]);
+  EXPECT_EQ(q.dihedral_under_10, under[1]);
+  EXPECT_EQ(q.dihedral_under_20, under[2]);
+  EXPECT_EQ(q.radius_ratio_mean, rr_sum / static_cast<double>(m.num_tets()));
+  EXPECT_EQ(q.radius_ratio_min, rr_min);
+  EXPECT_EQ(q.edge_ratio_max, edge_max);
+  EXPECT_EQ(q.edge_ratio_mean, edge_sum / static_cast<double>(m.num_tets()));
+  EXPECT_EQ(q.volume, volume.value());
+  EXPECT_EQ(q.min_dihedral_deg, 0);  // the flat tets
+  EXPECT_EQ(q.max_dihedral_deg, 180);
+  EXPECT_EQ(smallest, 0);
+  // Without the flat ones, the extreme angles are the shapes'.
+  m.tets.resize(4 * 700);
+  const QualityStats fair = measure_quality(m);
+  smallest = 7, largest = -1;
+  for (size_t t = 0; t < m.num_tets(); ++t) {
+    const uint32_t* v = &m.tets[4 * t];
+    const TetShape s = tet_shape(m.point(v[0]), m.point(v[1]), m.point(v[2]), m.point(v[3]));
+    smallest = std::min(smallest, s.min_dihedral_rad);
+    largest = std::max(largest, s.max_dihedral_rad);
+  }
+  EXPECT_GT(rad_to_deg(smallest), 0);
+  EXPECT_NEAR(fair.min_dihedral_deg, rad_to_deg(smallest), 1e-12);
+  EXPECT_NEAR(fair.max_dihedral_deg, rad_to_deg(largest), 1e-12);
 }
 
 TEST(QualityMeasure, SkipsOutOfRangeAndNonFiniteTets) {
