@@ -582,6 +582,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     PARTET_ASSERT(!frozen || frozen->size() == mesh.num_vertices(), "one frozen flag per vertex");
     sort_tets_by_space(mesh);
     TetTopology topo(mesh);
+    topo.measure_qualities();
     std::vector<uint8_t> fixed = topo.boundary_vertices();
     for (uint32_t v : mesh.tris) fixed[v] = 1;
     if (frozen)

@@ -1,11 +1,9 @@
 // The corner points of a vertex's star laid out by coordinate (structure of
 // arrays), so that the smoothing and relaxation trials measure every tet of
-// the star at a trial point in one loop the compiler vectorizes. The
-// measures are tet_quality and tet_radius_ratio bit for bit: the same
-// operations in the same order on each tet (no fused products: the build
-// has -ffp-contract=off), so the meshes do not change. The orientations
-// are orient3d's: its filter on every tet, its exact path where that is
-// not certain.
+// the star at a trial point in one loop the compiler vectorizes
+// (tet_kernels.hpp): tet_quality and tet_radius_ratio bit for bit, so the
+// meshes do not change. The orientations are orient3d's: its filter on
+// every tet, its exact path where that is not certain.
 #pragma once
 
 #include <cstddef>

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/hash_mix.hpp"
+#include "optimize/tet_kernels.hpp"
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
@@ -249,6 +250,31 @@ double TetTopology::measure_radius_ratio(uint32_t t) const { return radius_ratio
 double TetTopology::measure(uint32_t t) const {
   const uint32_t* v = tet(t);
   return tet_quality(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
+}
+
+void TetTopology::measure_qualities() {
+  constexpr size_t kBlock = 256;
+  std::vector<double> columns(12 * kBlock), out(kBlock);
+  std::vector<uint32_t> block;
+  block.reserve(kBlock);
+  const auto flush = [&] {
+    TetColumns p;
+    for (int c = 0; c < 12; ++c) p.c[c] = &columns[static_cast<size_t>(c) * kBlock];
+    tet_qualities(p, block.size(), out.data());
+    for (size_t k = 0; k < block.size(); ++k) measures_[block[k]].quality = out[k];
+    block.clear();
+  };
+  for (uint32_t t = 0; t < slots(); ++t) {
+    if (!alive(t) || !std::isnan(measures_[t].quality)) continue;
+    const size_t k = block.size();
+    for (int j = 0; j < 4; ++j) {
+      const double* x = point(tet(t)[j]);
+      for (int i = 0; i < 3; ++i) columns[static_cast<size_t>(3 * j + i) * kBlock + k] = x[i];
+    }
+    block.push_back(t);
+    if (block.size() == kBlock) flush();
+  }
+  flush();
 }
 
 void TetTopology::move_vertex(uint32_t v, const double* x) {

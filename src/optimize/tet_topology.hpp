@@ -71,6 +71,10 @@ class TetTopology {
   // compute): after a move_vertex whose trial already measured the star.
   void keep_measures(uint32_t t, double quality, double radius_ratio) { measures_[t] = {quality, radius_ratio}; }
   void keep_quality(uint32_t t, double quality) { measures_[t].quality = quality; }
+  // Measures the quality of every alive tet not yet measured, in blocks
+  // (tet_kernels.hpp): what quality(t) would compute, for a caller about
+  // to read them all (the first topology pass reads every slot's).
+  void measure_qualities();
   size_t num_vertices() const { return mesh_.num_vertices(); }
 
   // Appends a vertex at p (no tet has it yet; with global ids, `global_id`

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "core/predicates.hpp"
@@ -215,6 +217,18 @@ TEST(TetTopology, VertexIncidenceIsTheStarsAndNeighbours) {
   }
   EXPECT_TRUE(incidence.star(13).empty());
   EXPECT_EQ(incidence.neighbours(w).size(), 14u);
+}
+
+// The qualities measured in blocks are the ones quality() measures one by
+// one, bit for bit.
+TEST(TetTopology, QualitiesMeasuredTogetherAreTheLazyOnes) {
+  TetMesh m = lattice();
+  for (size_t i = 0; i < m.xyz.size(); ++i) m.xyz[i] += 0.01 * static_cast<double>((i * 7919) % 13);
+  TetMesh copy = m;
+  TetTopology together(m), lazy(copy);
+  together.measure_qualities();
+  for (uint32_t t = 0; t < together.slots(); ++t)
+    EXPECT_EQ(std::bit_cast<uint64_t>(together.quality(t)), std::bit_cast<uint64_t>(lazy.quality(t))) << t;
 }
 
 // Per alive tet: whether it is unchanged since change count `count`.
