@@ -52,6 +52,12 @@
 namespace partet {
 namespace {
 
+// Edge removals remembered as failed at a time (FailedEdges): the passes go
+// block by block, so the failures asked about again are recent ones, and a
+// table of 64 KiB stays in cache where one sized by the mesh missed on
+// every lookup.
+constexpr size_t kFailedEdges = 2048;
+
 // Work list entries per tet below the target at the start of a pass.
 constexpr size_t kWorkPerBadTet = 4;
 // Smoothing works on the tets under this angle (or the target if lower):
@@ -590,7 +596,7 @@ OptimizeStats optimize_mesh(TetMesh& mesh, const OptimizeOptions& options, const
     const double target = quality_of_angle(options.quality_target_deg);
     SmoothingScratch scratch;
     FailedFlips failed_flips;
-    FailedEdges failed_edges(topo.slots() / 4);
+    FailedEdges failed_edges(kFailedEdges);
     FailedSplits failed_splits(topo.slots() / 4);
     RefusedCollapses refused_collapses;
     for (int pass = 0; pass < options.passes; ++pass) {
