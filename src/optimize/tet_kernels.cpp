@@ -8,8 +8,12 @@
 #include "optimize/tet_quality.hpp"
 
 namespace partet {
+namespace {
 
-void tet_qualities(const TetColumns& p, size_t n, double* __restrict out) {
+// out[k] = measure(the twelve coordinates of tet k's corners), in one loop
+// over the columns (the measures are inlined into it).
+template <class Measure>
+void each_tet(const TetColumns& p, size_t n, double* __restrict out, Measure measure) {
   const double* __restrict x0 = p.c[0];
   const double* __restrict y0 = p.c[1];
   const double* __restrict z0 = p.c[2];
@@ -22,27 +26,48 @@ void tet_qualities(const TetColumns& p, size_t n, double* __restrict out) {
   const double* __restrict x3 = p.c[9];
   const double* __restrict y3 = p.c[10];
   const double* __restrict z3 = p.c[11];
-  for (size_t k = 0; k < n; ++k) {
-    // a = p1 - p0, b = p2 - p0, c = p3 - p0, e = p2 - p1, f = p3 - p1, g = p3 - p2.
-    const double ax = x1[k] - x0[k], ay = y1[k] - y0[k], az = z1[k] - z0[k];
-    const double bx = x2[k] - x0[k], by = y2[k] - y0[k], bz = z2[k] - z0[k];
-    const double cx = x3[k] - x0[k], cy = y3[k] - y0[k], cz = z3[k] - z0[k];
-    const double ex = x2[k] - x1[k], ey = y2[k] - y1[k], ez = z2[k] - z1[k];
-    const double fx = x3[k] - x1[k], fy = y3[k] - y1[k], fz = z3[k] - z1[k];
-    const double gx = x3[k] - x2[k], gy = y3[k] - y2[k], gz = z3[k] - z2[k];
-    // n0 = f x e, n1 = b x c, n2 = c x a, n3 = a x b.
+  for (size_t k = 0; k < n; ++k)
+    out[k] = measure(x0[k], y0[k], z0[k], x1[k], y1[k], z1[k], x2[k], y2[k], z2[k], x3[k], y3[k], z3[k]);
+}
+
+// From p0: a = p1 - p0, b = p2 - p0, c = p3 - p0, and the normals n1 = b x c,
+// n2 = c x a, n3 = a x b of the faces opposite p1, p2, p3 (the set-up both
+// measures share, in their own order of operations).
+struct Frame {
+  double ax, ay, az, bx, by, bz, cx, cy, cz;
+  double n1x, n1y, n1z, n2x, n2y, n2z, n3x, n3y, n3z;
+};
+inline Frame frame(double x0, double y0, double z0, double x1, double y1, double z1, double x2, double y2, double z2,
+                   double x3, double y3, double z3) {
+  Frame f;
+  f.ax = x1 - x0, f.ay = y1 - y0, f.az = z1 - z0;
+  f.bx = x2 - x0, f.by = y2 - y0, f.bz = z2 - z0;
+  f.cx = x3 - x0, f.cy = y3 - y0, f.cz = z3 - z0;
+  f.n1x = f.by * f.cz - f.bz * f.cy, f.n1y = f.bz * f.cx - f.bx * f.cz, f.n1z = f.bx * f.cy - f.by * f.cx;
+  f.n2x = f.cy * f.az - f.cz * f.ay, f.n2y = f.cz * f.ax - f.cx * f.az, f.n2z = f.cx * f.ay - f.cy * f.ax;
+  f.n3x = f.ay * f.bz - f.az * f.by, f.n3y = f.az * f.bx - f.ax * f.bz, f.n3z = f.ax * f.by - f.ay * f.bx;
+  return f;
+}
+
+}  // namespace
+
+void tet_qualities(const TetColumns& p, size_t n, double* __restrict out) {
+  const auto quality = [](double x0, double y0, double z0, double x1, double y1, double z1, double x2, double y2,
+                          double z2, double x3, double y3, double z3) {
+    const Frame t = frame(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
+    // e = p2 - p1, f = p3 - p1, g = p3 - p2; n0 = f x e.
+    const double ex = x2 - x1, ey = y2 - y1, ez = z2 - z1;
+    const double fx = x3 - x1, fy = y3 - y1, fz = z3 - z1;
+    const double gx = x3 - x2, gy = y3 - y2, gz = z3 - z2;
     const double n0x = fy * ez - fz * ey, n0y = fz * ex - fx * ez, n0z = fx * ey - fy * ex;
-    const double n1x = by * cz - bz * cy, n1y = bz * cx - bx * cz, n1z = bx * cy - by * cx;
-    const double n2x = cy * az - cz * ay, n2y = cz * ax - cx * az, n2z = cx * ay - cy * ax;
-    const double n3x = ay * bz - az * by, n3y = az * bx - ax * bz, n3z = ax * by - ay * bx;
-    const double d = ax * n1x + ay * n1y + az * n1z;
+    const double d = t.ax * t.n1x + t.ay * t.n1y + t.az * t.n1z;
     const double m0 = n0x * n0x + n0y * n0y + n0z * n0z;
-    const double m1 = n1x * n1x + n1y * n1y + n1z * n1z;
-    const double m2 = n2x * n2x + n2y * n2y + n2z * n2z;
-    const double m3 = n3x * n3x + n3y * n3y + n3z * n3z;
-    const double r0 = (ax * ax + ay * ay + az * az) / (m2 * m3);
-    const double r1 = (bx * bx + by * by + bz * bz) / (m1 * m3);
-    const double r2 = (cx * cx + cy * cy + cz * cz) / (m1 * m2);
+    const double m1 = t.n1x * t.n1x + t.n1y * t.n1y + t.n1z * t.n1z;
+    const double m2 = t.n2x * t.n2x + t.n2y * t.n2y + t.n2z * t.n2z;
+    const double m3 = t.n3x * t.n3x + t.n3y * t.n3y + t.n3z * t.n3z;
+    const double r0 = (t.ax * t.ax + t.ay * t.ay + t.az * t.az) / (m2 * m3);
+    const double r1 = (t.bx * t.bx + t.by * t.by + t.bz * t.bz) / (m1 * m3);
+    const double r2 = (t.cx * t.cx + t.cy * t.cy + t.cz * t.cz) / (m1 * m2);
     const double r3 = (ex * ex + ey * ey + ez * ez) / (m0 * m3);
     const double r4 = (fx * fx + fy * fy + fz * fz) / (m0 * m2);
     const double r5 = (gx * gx + gy * gy + gz * gz) / (m0 * m1);
@@ -60,68 +85,43 @@ void tet_qualities(const TetColumns& p, size_t n, double* __restrict out) {
     high = high < r5 ? r5 : high;
     const double pick = d >= 0 ? low : high;
     const bool faces = (m0 > 0) & (m1 > 0) & (m2 > 0) & (m3 > 0);
-    out[k] = faces ? kRegularSineScale * d * std::sqrt(pick) : 0.0;
-  }
+    return faces ? kRegularSineScale * d * std::sqrt(pick) : 0.0;
+  };
+  each_tet(p, n, out, quality);
 }
 
 void tet_radius_ratios(const TetColumns& p, size_t n, double* __restrict out) {
-  const double* __restrict x0 = p.c[0];
-  const double* __restrict y0 = p.c[1];
-  const double* __restrict z0 = p.c[2];
-  const double* __restrict x1 = p.c[3];
-  const double* __restrict y1 = p.c[4];
-  const double* __restrict z1 = p.c[5];
-  const double* __restrict x2 = p.c[6];
-  const double* __restrict y2 = p.c[7];
-  const double* __restrict z2 = p.c[8];
-  const double* __restrict x3 = p.c[9];
-  const double* __restrict y3 = p.c[10];
-  const double* __restrict z3 = p.c[11];
-  for (size_t k = 0; k < n; ++k) {
-    const double ax = x1[k] - x0[k], ay = y1[k] - y0[k], az = z1[k] - z0[k];
-    const double bx = x2[k] - x0[k], by = y2[k] - y0[k], bz = z2[k] - z0[k];
-    const double cx = x3[k] - x0[k], cy = y3[k] - y0[k], cz = z3[k] - z0[k];
+  const auto radius_ratio = [](double x0, double y0, double z0, double x1, double y1, double z1, double x2, double y2,
+                               double z2, double x3, double y3, double z3) {
+    const Frame t = frame(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
     // n0 = (c - a) x (b - a), from the differences as TetFrame has it.
-    const double ux = cx - ax, uy = cy - ay, uz = cz - az;
-    const double wx = bx - ax, wy = by - ay, wz = bz - az;
+    const double ux = t.cx - t.ax, uy = t.cy - t.ay, uz = t.cz - t.az;
+    const double wx = t.bx - t.ax, wy = t.by - t.ay, wz = t.bz - t.az;
     const double n0x = uy * wz - uz * wy, n0y = uz * wx - ux * wz, n0z = ux * wy - uy * wx;
-    const double n1x = by * cz - bz * cy, n1y = bz * cx - bx * cz, n1z = bx * cy - by * cx;
-    const double n2x = cy * az - cz * ay, n2y = cz * ax - cx * az, n2z = cx * ay - cy * ax;
-    const double n3x = ay * bz - az * by, n3y = az * bx - ax * bz, n3z = ax * by - ay * bx;
     const double l0 = std::sqrt(n0x * n0x + n0y * n0y + n0z * n0z);
-    const double l1 = std::sqrt(n1x * n1x + n1y * n1y + n1z * n1z);
-    const double l2 = std::sqrt(n2x * n2x + n2y * n2y + n2z * n2z);
-    const double l3 = std::sqrt(n3x * n3x + n3y * n3y + n3z * n3z);
-    const double d = ax * n1x + ay * n1y + az * n1z;
+    const double l1 = std::sqrt(t.n1x * t.n1x + t.n1y * t.n1y + t.n1z * t.n1z);
+    const double l2 = std::sqrt(t.n2x * t.n2x + t.n2y * t.n2y + t.n2z * t.n2z);
+    const double l3 = std::sqrt(t.n3x * t.n3x + t.n3y * t.n3y + t.n3z * t.n3z);
+    const double d = t.ax * t.n1x + t.ay * t.n1y + t.az * t.n1z;
     const double area_sum = l0 + l1 + l2 + l3;
-    const double aa = ax * ax + ay * ay + az * az;
-    const double bb = bx * bx + by * by + bz * bz;
-    const double cc = cx * cx + cy * cy + cz * cz;
-    const double ix = bb * n2x + cc * n3x, iy = bb * n2y + cc * n3y, iz = bb * n2z + cc * n3z;
-    const double sx = aa * n1x + ix, sy = aa * n1y + iy, sz = aa * n1z + iz;
+    const double aa = t.ax * t.ax + t.ay * t.ay + t.az * t.az;
+    const double bb = t.bx * t.bx + t.by * t.by + t.bz * t.bz;
+    const double cc = t.cx * t.cx + t.cy * t.cy + t.cz * t.cz;
+    const double ix = bb * t.n2x + cc * t.n3x, iy = bb * t.n2y + cc * t.n3y, iz = bb * t.n2z + cc * t.n3z;
+    const double sx = aa * t.n1x + ix, sy = aa * t.n1y + iy, sz = aa * t.n1z + iz;
     const double denominator = area_sum * std::sqrt(sx * sx + sy * sy + sz * sz);
     const double ratio = 6 * d * d / denominator;
-    out[k] = (d != 0 && denominator > 0) ? (ratio < 1.0 ? ratio : 1.0) : 0.0;
-  }
+    return (d != 0 && denominator > 0) ? (ratio < 1.0 ? ratio : 1.0) : 0.0;
+  };
+  each_tet(p, n, out, radius_ratio);
 }
 
 void orient3d_filters(const TetColumns& p, size_t n, double* __restrict out) {
-  const double* __restrict x0 = p.c[0];
-  const double* __restrict y0 = p.c[1];
-  const double* __restrict z0 = p.c[2];
-  const double* __restrict x1 = p.c[3];
-  const double* __restrict y1 = p.c[4];
-  const double* __restrict z1 = p.c[5];
-  const double* __restrict x2 = p.c[6];
-  const double* __restrict y2 = p.c[7];
-  const double* __restrict z2 = p.c[8];
-  const double* __restrict x3 = p.c[9];
-  const double* __restrict y3 = p.c[10];
-  const double* __restrict z3 = p.c[11];
-  for (size_t k = 0; k < n; ++k) {
-    const double ux = x1[k] - x0[k], uy = y1[k] - y0[k], uz = z1[k] - z0[k];
-    const double vx = x2[k] - x0[k], vy = y2[k] - y0[k], vz = z2[k] - z0[k];
-    const double wx = x3[k] - x0[k], wy = y3[k] - y0[k], wz = z3[k] - z0[k];
+  const auto filter = [](double x0, double y0, double z0, double x1, double y1, double z1, double x2, double y2,
+                         double z2, double x3, double y3, double z3) {
+    const double ux = x1 - x0, uy = y1 - y0, uz = z1 - z0;
+    const double vx = x2 - x0, vy = y2 - y0, vz = z2 - z0;
+    const double wx = x3 - x0, wy = y3 - y0, wz = z3 - z0;
     const double p1 = vy * wz, p2 = vz * wy;
     const double p3 = vz * wx, p4 = vx * wz;
     const double p5 = vx * wy, p6 = vy * wx;
@@ -129,10 +129,10 @@ void orient3d_filters(const TetColumns& p, size_t n, double* __restrict out) {
     const double aux = std::fabs(ux), auy = std::fabs(uy), auz = std::fabs(uz);
     const double permanent = (aux * (std::fabs(p1) + std::fabs(p2)) + auy * (std::fabs(p3) + std::fabs(p4))) +
                              auz * (std::fabs(p5) + std::fabs(p6));
-    const double bound =
-        detail::kOrient3dBound * permanent + (aux + auy + auz + 1) * detail::kUnderflowSlack;
-    out[k] = det > bound ? 1.0 : (det < -bound ? -1.0 : 0.0);
-  }
+    const double bound = detail::kOrient3dBound * permanent + (aux + auy + auz + 1) * detail::kUnderflowSlack;
+    return det > bound ? 1.0 : (det < -bound ? -1.0 : 0.0);
+  };
+  each_tet(p, n, out, filter);
 }
 
 }  // namespace partet

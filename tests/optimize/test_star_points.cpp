@@ -51,12 +51,17 @@ std::vector<std::vector<double>> trial_points(const TetMesh& m) {
 
 uint64_t bits(double x) { return std::bit_cast<uint64_t>(x); }
 
+// Vertex v's star in `topo`, as slots and as vertex quadruples.
+void star_of(const TetTopology& topo, uint32_t v, std::vector<uint32_t>& star, std::vector<uint32_t>& quads) {
+  topo.vertex_star(v, star);
+  topo.tet_vertices(star, quads);
+}
+
 TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
   TetMesh mesh = jittered_lattice();
   TetTopology topo(mesh);
   std::vector<uint32_t> star, quads;
-  topo.vertex_star(kCentre, star);
-  topo.tet_vertices(star, quads);
+  star_of(topo, kCentre, star, quads);
   ASSERT_EQ(star.size(), 24u);
   std::vector<int> corners(4, 0);
   for (size_t k = 0; k < star.size(); ++k)
@@ -102,13 +107,11 @@ TEST(StarPoints, ReloadingTakesTheNewStar) {
   TetMesh mesh = jittered_lattice();
   TetTopology topo(mesh);
   std::vector<uint32_t> star, quads;
-  topo.vertex_star(kCentre, star);
-  topo.tet_vertices(star, quads);
+  star_of(topo, kCentre, star, quads);
   StarPoints points;
   points.load(topo, kCentre, quads);
   // A corner vertex's star (one tet or a few) replaces the centre's.
-  topo.vertex_star(0, star);
-  topo.tet_vertices(star, quads);
+  star_of(topo, 0, star, quads);
   points.load(topo, 0, quads);
   ASSERT_EQ(points.size(), star.size());
   std::vector<double> quality(star.size());
