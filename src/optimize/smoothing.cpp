@@ -22,11 +22,6 @@ constexpr double kModelBand = 0.1;     // tets this close to the worst are model
 constexpr double kMaxMove = 0.5;       // longest step, in units of scale
 
 double dot3(const double* u, const double* w) { return u[0] * w[0] + u[1] * w[1] + u[2] * w[2]; }
-void cross3(const double* u, const double* w, double* out) {
-  out[0] = u[1] * w[2] - u[2] * w[1];
-  out[1] = u[2] * w[0] - u[0] * w[2];
-  out[2] = u[0] * w[1] - u[1] * w[0];
-}
 
 // The star of v, as vertex quadruples (4 per tet, each having v), with v's
 // position replaced by a trial point.
@@ -81,6 +76,14 @@ class Star {
     points_.place(x);
     points_.radius_ratios(ratio.data());
   }
+  // The circumcentre terms of every star tet with v at x
+  // (circumcentre_terms in tet_kernels.hpp): det, then x, y and z, each
+  // size() long, in `terms`.
+  void circumcentre_terms(const double* x, std::vector<double>& terms) const {
+    points_.place(x);
+    terms.resize(4 * n_);
+    points_.circumcentre_terms(terms.data(), terms.data() + n_, terms.data() + 2 * n_, terms.data() + 3 * n_);
+  }
   // Mean distance from x to the other vertices of the star's tets.
   double scale(const double* x) const {
     double sum = 0;
@@ -117,27 +120,18 @@ void least_norm_on_segment(const double* a, const double* b, double d[3]) {
 }
 
 // The volume-weighted mean of the circumcentres of the positive tets of
-// `star` (the optimal Delaunay triangulation update of Chen and Xu), in
-// out; false when no tet is positive.
-bool odt_point(const TetTopology& topo, std::span<const uint32_t> star, double out[3]) {
+// `star` with v at x (the optimal Delaunay triangulation update of Chen
+// and Xu), in out; false when no tet is positive. The terms are the tet
+// kernels' (tet_kernels.hpp), summed in star order.
+bool odt_point(const Star& star, const double* x, SmoothingScratch& scratch, double out[3]) {
+  star.circumcentre_terms(x, scratch.odt_terms);
+  const size_t n = star.size();
+  const double* det = scratch.odt_terms.data();
   double sum[3] = {0, 0, 0}, volume = 0;
-  for (uint32_t t : star) {
-    const uint32_t* v = topo.tet(t);
-    const double* p0 = topo.point(v[0]);
-    double e[3][3];
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) e[j][i] = topo.point(v[j + 1])[i] - p0[i];
-    // Circumcentre - p0 = (|e0|^2 e1 x e2 + |e1|^2 e2 x e0 + |e2|^2 e0 x e1) / (2 det).
-    double c[3][3];
-    cross3(e[1], e[2], c[0]);
-    cross3(e[2], e[0], c[1]);
-    cross3(e[0], e[1], c[2]);
-    const double det = dot3(e[0], c[0]);
-    if (!(det > 0)) continue;
-    const double len[3] = {dot3(e[0], e[0]), dot3(e[1], e[1]), dot3(e[2], e[2])};
-    for (int i = 0; i < 3; ++i)
-      sum[i] += det * (p0[i] + (len[0] * c[0][i] + len[1] * c[1][i] + len[2] * c[2][i]) / (2 * det));
-    volume += det;
+  for (size_t k = 0; k < n; ++k) {
+    if (!(det[k] > 0)) continue;
+    for (int i = 0; i < 3; ++i) sum[i] += scratch.odt_terms[(1 + i) * n + k];
+    volume += det[k];
   }
   if (!(volume > 0)) return false;
   for (int i = 0; i < 3; ++i) out[i] = sum[i] / volume;
@@ -329,7 +323,7 @@ bool relax_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> tets,
   double sum = 0;
   for (size_t k = 0; k < n; ++k) sum += topo.radius_ratio(tets[k]);
   double odt[3];
-  const bool has_odt = odt_point(topo, tets, odt);
+  const bool has_odt = odt_point(star, x, scratch, odt);
   const double* targets[2] = {odt, centroid};
   // The radius ratios first: most refused trials raise no radius ratio
   // (femur r1: 156,000 of 189,000), and then no quality is measured; then

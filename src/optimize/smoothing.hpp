@@ -38,6 +38,7 @@ struct SmoothingScratch {
   std::vector<size_t> active;    // star tets near the worst
   std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)
   StarPoints points;             // the star's corners, measured together at trial points
+  std::vector<double> odt_terms;  // relax_vertex's circumcentre terms (StarPoints::circumcentre_terms)
 };
 
 // Moves v when that raises the worst quality of its star; true if it moved.

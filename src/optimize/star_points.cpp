@@ -30,20 +30,22 @@ void StarPoints::place(const double* x) {
 }
 
 void StarPoints::qualities(double* out) const {
-  TetColumns p;
-  for (int c = 0; c < 12; ++c) p.c[c] = column(c / 3, c % 3);
+  const TetColumns p = columns();
   tet_qualities(p, n_, out);
 }
 
 void StarPoints::radius_ratios(double* out) const {
-  TetColumns p;
-  for (int c = 0; c < 12; ++c) p.c[c] = column(c / 3, c % 3);
+  const TetColumns p = columns();
   tet_radius_ratios(p, n_, out);
 }
 
+void StarPoints::circumcentre_terms(double* det, double* x, double* y, double* z) const {
+  const TetColumns p = columns();
+  partet::circumcentre_terms(p, n_, det, x, y, z);
+}
+
 bool StarPoints::all_positive() const {
-  TetColumns p;
-  for (int c = 0; c < 12; ++c) p.c[c] = column(c / 3, c % 3);
+  const TetColumns p = columns();
   signs_.resize(n_);
   orient3d_filters(p, n_, signs_.data());
   for (size_t k = 0; k < n_; ++k) {

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "optimize/tet_kernels.hpp"
 #include "optimize/tet_topology.hpp"
 
 namespace partet {
@@ -27,13 +28,19 @@ class StarPoints {
   void qualities(double* out) const;
   // tet_radius_ratio of each tet, in out[0 .. size()).
   void radius_ratios(double* out) const;
+  // circumcentre_terms (tet_kernels.hpp) of each tet: det, x, y, z.
+  void circumcentre_terms(double* det, double* x, double* y, double* z) const;
   // True when orient3d is positive for every tet (its filter on all at
   // once, the exact path for the uncertain ones).
   bool all_positive() const;
 
  private:
   // Coordinate i of corner j of tet k: coordinates_[(3 * j + i) * n_ + k].
-  const double* column(int corner, int i) const { return &coordinates_[(3 * static_cast<size_t>(corner) + i) * n_]; }
+  TetColumns columns() const {
+    TetColumns p;
+    for (size_t c = 0; c < 12; ++c) p.c[c] = &coordinates_[c * n_];
+    return p;
+  }
 
   size_t n_ = 0;
   std::vector<double> coordinates_;

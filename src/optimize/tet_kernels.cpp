@@ -2,6 +2,7 @@
 // (TetFrame, radius_ratio_of) and predicates.hpp's orient3d filter, per tet.
 #include "optimize/tet_kernels.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "core/predicates.hpp"
@@ -10,10 +11,11 @@
 namespace partet {
 namespace {
 
-// out[k] = measure(the twelve coordinates of tet k's corners), in one loop
-// over the columns (the measures are inlined into it).
-template <class Measure>
-void each_tet(const TetColumns& p, size_t n, double* __restrict out, Measure measure) {
+// o_j[k] = measure(the twelve coordinates of tet k's corners)[j], in one
+// loop over the columns (the measures are inlined into it).
+template <size_t N, class Measure>
+void each_tet(const TetColumns& p, size_t n, Measure measure, double* __restrict o0, double* __restrict o1 = nullptr,
+              double* __restrict o2 = nullptr, double* __restrict o3 = nullptr) {
   const double* __restrict x0 = p.c[0];
   const double* __restrict y0 = p.c[1];
   const double* __restrict z0 = p.c[2];
@@ -26,8 +28,15 @@ void each_tet(const TetColumns& p, size_t n, double* __restrict out, Measure mea
   const double* __restrict x3 = p.c[9];
   const double* __restrict y3 = p.c[10];
   const double* __restrict z3 = p.c[11];
-  for (size_t k = 0; k < n; ++k)
-    out[k] = measure(x0[k], y0[k], z0[k], x1[k], y1[k], z1[k], x2[k], y2[k], z2[k], x3[k], y3[k], z3[k]);
+  static_assert(N >= 1 && N <= 4, "one to four values per tet");
+  for (size_t k = 0; k < n; ++k) {
+    const std::array<double, N> values =
+        measure(x0[k], y0[k], z0[k], x1[k], y1[k], z1[k], x2[k], y2[k], z2[k], x3[k], y3[k], z3[k]);
+    o0[k] = values[0];
+    if constexpr (N > 1) o1[k] = values[1];
+    if constexpr (N > 2) o2[k] = values[2];
+    if constexpr (N > 3) o3[k] = values[3];
+  }
 }
 
 // From p0: a = p1 - p0, b = p2 - p0, c = p3 - p0, and the normals n1 = b x c,
@@ -85,9 +94,9 @@ void tet_qualities(const TetColumns& p, size_t n, double* __restrict out) {
     high = high < r5 ? r5 : high;
     const double pick = d >= 0 ? low : high;
     const bool faces = (m0 > 0) & (m1 > 0) & (m2 > 0) & (m3 > 0);
-    return faces ? kRegularSineScale * d * std::sqrt(pick) : 0.0;
+    return std::array<double, 1>{faces ? kRegularSineScale * d * std::sqrt(pick) : 0.0};
   };
-  each_tet(p, n, out, quality);
+  each_tet<1>(p, n, quality, out);
 }
 
 void tet_radius_ratios(const TetColumns& p, size_t n, double* __restrict out) {
@@ -111,9 +120,9 @@ void tet_radius_ratios(const TetColumns& p, size_t n, double* __restrict out) {
     const double sx = aa * t.n1x + ix, sy = aa * t.n1y + iy, sz = aa * t.n1z + iz;
     const double denominator = area_sum * std::sqrt(sx * sx + sy * sy + sz * sz);
     const double ratio = 6 * d * d / denominator;
-    return (d != 0 && denominator > 0) ? (ratio < 1.0 ? ratio : 1.0) : 0.0;
+    return std::array<double, 1>{(d != 0 && denominator > 0) ? (ratio < 1.0 ? ratio : 1.0) : 0.0};
   };
-  each_tet(p, n, out, radius_ratio);
+  each_tet<1>(p, n, radius_ratio, out);
 }
 
 void orient3d_filters(const TetColumns& p, size_t n, double* __restrict out) {
@@ -130,9 +139,30 @@ void orient3d_filters(const TetColumns& p, size_t n, double* __restrict out) {
     const double permanent = (aux * (std::fabs(p1) + std::fabs(p2)) + auy * (std::fabs(p3) + std::fabs(p4))) +
                              auz * (std::fabs(p5) + std::fabs(p6));
     const double bound = detail::kOrient3dBound * permanent + (aux + auy + auz + 1) * detail::kUnderflowSlack;
-    return det > bound ? 1.0 : (det < -bound ? -1.0 : 0.0);
+    return std::array<double, 1>{det > bound ? 1.0 : (det < -bound ? -1.0 : 0.0)};
   };
-  each_tet(p, n, out, filter);
+  each_tet<1>(p, n, filter, out);
+}
+
+void circumcentre_terms(const TetColumns& p, size_t n, double* det, double* x, double* y, double* z) {
+  const auto terms = [](double x0, double y0, double z0, double x1, double y1, double z1, double x2, double y2,
+                        double z2, double x3, double y3, double z3) {
+    // e_j = p_{j+1} - p0; circumcentre - p0 = (|e0|^2 e1 x e2 + |e1|^2 e2 x e0 + |e2|^2 e0 x e1) / (2 det).
+    const double ax = x1 - x0, ay = y1 - y0, az = z1 - z0;  // e0
+    const double bx = x2 - x0, by = y2 - y0, bz = z2 - z0;  // e1
+    const double cx = x3 - x0, cy = y3 - y0, cz = z3 - z0;  // e2
+    const double ux = by * cz - bz * cy, uy = bz * cx - bx * cz, uz = bx * cy - by * cx;  // e1 x e2
+    const double vx = cy * az - cz * ay, vy = cz * ax - cx * az, vz = cx * ay - cy * ax;  // e2 x e0
+    const double wx = ay * bz - az * by, wy = az * bx - ax * bz, wz = ax * by - ay * bx;  // e0 x e1
+    const double d = ax * ux + ay * uy + az * uz;
+    const double la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz, lc = cx * cx + cy * cy + cz * cz;
+    std::array<double, 4> out{d, 0, 0, 0};
+    out[1] = d * (x0 + (la * ux + lb * vx + lc * wx) / (2 * d));
+    out[2] = d * (y0 + (la * uy + lb * vy + lc * wy) / (2 * d));
+    out[3] = d * (z0 + (la * uz + lb * vz + lc * wz) / (2 * d));
+    return out;
+  };
+  each_tet<4>(p, n, terms, det, x, y, z);
 }
 
 }  // namespace partet

@@ -22,5 +22,9 @@ void tet_radius_ratios(const TetColumns& p, size_t n, double* out);
 // orient3d's filter (core/predicates.hpp) on (p0, p1, p2, p3): 1 or -1
 // where it is certain of the sign, 0 where the exact path must decide.
 void orient3d_filters(const TetColumns& p, size_t n, double* out);
+// The optimal Delaunay point's terms (smoothing.cpp, odt_point): det = 6
+// times the signed volume, and det times the circumcentre, per coordinate
+// (meaningless where det is not positive).
+void circumcentre_terms(const TetColumns& p, size_t n, double* det, double* x, double* y, double* z);
 
 }  // namespace partet

@@ -1,9 +1,10 @@
 // StarPoints: the batched measures of a vertex's star at trial points are
-// tet_quality and tet_radius_ratio bit for bit, and its orientations
-// orient3d's, at ordinary, degenerate, inverted and overflowing points,
-// with the vertex at every corner.
+// tet_quality, tet_radius_ratio and the relaxation's circumcentre terms bit
+// for bit, and its orientations orient3d's, at ordinary, degenerate,
+// inverted and overflowing points, with the vertex at every corner.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <random>
@@ -51,6 +52,28 @@ std::vector<std::vector<double>> trial_points(const TetMesh& m) {
 
 uint64_t bits(double x) { return std::bit_cast<uint64_t>(x); }
 
+// The optimal Delaunay point's terms of tet (p0, p1, p2, p3) as the
+// relaxation first summed them: det, then det times the circumcentre.
+std::array<double, 4> circumcentre_terms_of(const double* const* p) {
+  double e[3][3], c[3][3];
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) e[j][i] = p[j + 1][i] - p[0][i];
+  for (int j = 0; j < 3; ++j) {
+    const double* u = e[(j + 1) % 3];
+    const double* w = e[(j + 2) % 3];
+    c[j][0] = u[1] * w[2] - u[2] * w[1];
+    c[j][1] = u[2] * w[0] - u[0] * w[2];
+    c[j][2] = u[0] * w[1] - u[1] * w[0];
+  }
+  const double det = e[0][0] * c[0][0] + e[0][1] * c[0][1] + e[0][2] * c[0][2];
+  double len[3];
+  for (int j = 0; j < 3; ++j) len[j] = e[j][0] * e[j][0] + e[j][1] * e[j][1] + e[j][2] * e[j][2];
+  std::array<double, 4> out{det, 0, 0, 0};
+  for (int i = 0; i < 3; ++i)
+    out[1 + i] = det * (p[0][i] + (len[0] * c[0][i] + len[1] * c[1][i] + len[2] * c[2][i]) / (2 * det));
+  return out;
+}
+
 // Vertex v's star in `topo`, as slots and as vertex quadruples.
 void star_of(const TetTopology& topo, uint32_t v, std::vector<uint32_t>& star, std::vector<uint32_t>& quads) {
   topo.vertex_star(v, star);
@@ -71,7 +94,7 @@ TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
   StarPoints points;
   points.load(topo, kCentre, quads);
   ASSERT_EQ(points.size(), star.size());
-  std::vector<double> quality(star.size()), ratio(star.size());
+  std::vector<double> quality(star.size()), ratio(star.size()), terms(4 * star.size());
   std::vector<std::vector<double>> trials = trial_points(mesh);
   // The centroid of the face opposite the centre in the first tet: within
   // rounding of its plane, where orient3d's filter leaves the sign to the
@@ -85,6 +108,8 @@ TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
     points.place(x.data());
     points.qualities(quality.data());
     points.radius_ratios(ratio.data());
+    const size_t n = star.size();
+    points.circumcentre_terms(terms.data(), terms.data() + n, terms.data() + 2 * n, terms.data() + 3 * n);
     bool positive = true;
     for (size_t k = 0; k < star.size(); ++k) {
       const double* q[4];
@@ -99,6 +124,9 @@ TEST(StarPoints, MeasuresAreTheScalarOnesBitForBit) {
           << "tet " << k << " at " << x[0] << " " << x[1] << " " << x[2];
       EXPECT_EQ(bits(ratio[k]), bits(tet_radius_ratio(p[0], p[1], p[2], p[3])))
           << "tet " << k << " at " << x[0] << " " << x[1] << " " << x[2];
+      const std::array<double, 4> want = circumcentre_terms_of(p);
+      for (int j = 0; j < 4; ++j)
+        EXPECT_EQ(bits(terms[j * n + k]), bits(want[j])) << "tet " << k << " term " << j << " at " << x[0];
     }
   }
 }
