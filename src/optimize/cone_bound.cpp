@@ -169,6 +169,66 @@ bool no_two_face_edge(const TetTopology& topo, std::span<const uint32_t> cavity,
   return none;
 }
 
+// The same over the cavity of a closed ring of tets around an edge (a, b),
+// from the ring's structure instead of an edge table: tet k = (a, b, r_k,
+// r_{k+1}) has its two outer faces (opposite a and b) at edge (r_k,
+// r_{k+1}), and edges (a, r_k) and (b, r_k) have the outer faces of tets k
+// - 1 and k, whose angles there sum. The angles and their products are
+// those of for_each_two_face_edge, bit for bit (a product of two unit
+// complex numbers is the same in either order; the faces of an angle may
+// come in either order).
+template <class Edge>
+void for_each_ring_edge(const TetTopology& topo, const TetTopology::Ring& ring, Edge&& edge) {
+  const auto angle = [](const double* nk, const double* nl, double& c, double& s) {
+    const double x[3] = {nk[1] * nl[2] - nk[2] * nl[1], nk[2] * nl[0] - nk[0] * nl[2], nk[0] * nl[1] - nk[1] * nl[0]};
+    c = -(nk[0] * nl[0] + nk[1] * nl[1] + nk[2] * nl[2]);
+    s = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  };
+  const auto times = [](double c1, double s1, double c2, double s2, double& c, double& s) {
+    c = c1 * c2 - s1 * s2;
+    s = c1 * s2 + s1 * c2;
+  };
+  // Per tet: its angles at (a, r_k), (a, r_{k+1}), (b, r_k), (b, r_{k+1}).
+  double at[TetTopology::kMaxRing][4][2];
+  for (int k = 0; k < ring.n; ++k) {
+    const uint32_t* v = topo.tet(ring.tets[k]);
+    double n[12];
+    outward_normals(topo, v, n);
+    const double* na = &n[3 * local_index(v, ring.a)];
+    const double* nb = &n[3 * local_index(v, ring.b)];
+    const double* n0 = &n[3 * local_index(v, ring.vertices[k])];
+    const double* n1 = &n[3 * local_index(v, ring.vertices[(k + 1) % ring.n])];
+    double c, s;
+    angle(na, nb, c, s);
+    if (!edge(c, s)) return;
+    angle(nb, n1, at[k][0][0], at[k][0][1]);
+    angle(nb, n0, at[k][1][0], at[k][1][1]);
+    angle(na, n1, at[k][2][0], at[k][2][1]);
+    angle(na, n0, at[k][3][0], at[k][3][1]);
+  }
+  for (int k = 0; k < ring.n; ++k) {
+    const int before = (k + ring.n - 1) % ring.n;
+    for (int side = 0; side < 2; ++side) {
+      const double* mine = at[k][2 * side];
+      const double* theirs = at[before][2 * side + 1];
+      double c, s;
+      times(mine[0], mine[1], theirs[0], theirs[1], c, s);
+      if (!edge(c, s)) return;
+    }
+  }
+}
+
+// no_two_face_edge over a ring's cavity (for_each_ring_edge).
+template <class Below>
+bool no_two_face_ring_edge(const TetTopology& topo, const TetTopology::Ring& ring, Below&& below) {
+  bool none = true;
+  for_each_ring_edge(topo, ring, [&](double c, double s) {
+    none = !below(c, s);
+    return none;
+  });
+  return none;
+}
+
 }  // namespace
 
 double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cavity) {
@@ -184,25 +244,49 @@ double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cav
   return bound;
 }
 
-bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, double worst) {
+namespace {
+
+// cones_can_beat with `none(below)` telling whether below(c, s) holds at
+// none of the cavity's two-face edges.
+template <class None>
+bool can_beat(double worst, None&& none) {
   // worst = K sin(alpha); the bound is below it where phi lies within
   // 2 alpha of 0 (or of 2 pi): c > 0 and |s| < sin(2 alpha) |(c, s)|,
   // for 2 alpha up to 90 degrees.
   if (!(worst >= 1e-4) || !(worst <= quality_of_angle(45))) return true;
   const double sine = worst * (1 - 1e-6) / kRegularSineScale;
   const double reach = 2 * sine * std::sqrt(1 - sine * sine);  // sin(2 alpha)
-  return no_two_face_edge(topo, cavity,
-                          [&](double c, double s) { return c > 0 && std::abs(s) < reach * std::sqrt(c * c + s * s); });
+  return none([&](double c, double s) { return c > 0 && std::abs(s) < reach * std::sqrt(c * c + s * s); });
 }
 
-bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle) {
+// cones_can_keep_angle the same way.
+template <class None>
+bool can_keep_angle(double angle, None&& none) {
   if (!(angle >= 1e-6) || !(angle <= std::numbers::pi / 2)) return true;
   // phi < beta for phi, beta in [0, pi] exactly when s >= 0 and the cross
   // product of (cos beta, sin beta) and (c, s), |(c, s)| sin(phi - beta),
   // is negative.
   const double beta = 2 * angle * (1 - 1e-6);
   const double cb = std::cos(beta), sb = std::sin(beta);
-  return no_two_face_edge(topo, cavity, [&](double c, double s) { return s >= 0 && s * cb - c * sb < 0; });
+  return none([&](double c, double s) { return s >= 0 && s * cb - c * sb < 0; });
+}
+
+}  // namespace
+
+bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, double worst) {
+  return can_beat(worst, [&](auto&& below) { return no_two_face_edge(topo, cavity, below); });
+}
+
+bool cones_can_beat(const TetTopology& topo, const TetTopology::Ring& ring, double worst) {
+  return can_beat(worst, [&](auto&& below) { return no_two_face_ring_edge(topo, ring, below); });
+}
+
+bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle) {
+  return can_keep_angle(angle, [&](auto&& below) { return no_two_face_edge(topo, cavity, below); });
+}
+
+bool cones_can_keep_angle(const TetTopology& topo, const TetTopology::Ring& ring, double angle) {
+  return can_keep_angle(angle, [&](auto&& below) { return no_two_face_ring_edge(topo, ring, below); });
 }
 
 }  // namespace partet

@@ -31,6 +31,9 @@ double cone_quality_bound(const TetTopology& topo, std::span<const uint32_t> cav
 // tets whose worst quality is above `worst`. The angles are summed as
 // unit complex numbers (no trigonometry per edge).
 bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, double worst);
+// The same for the cavity of a closed ring of tets around an edge (the
+// insertion's and the needle splits' edge splits), read from the ring.
+bool cones_can_beat(const TetTopology& topo, const TetTopology::Ring& ring, double worst);
 
 // The same bound on angles: the smallest dihedral angle of a cone set is
 // at most phi / 2 at every such edge. False when some edge's phi (in
@@ -38,5 +41,6 @@ bool cones_can_beat(const TetTopology& topo, std::span<const uint32_t> cavity, d
 // then no vertex in `cavity` can make tets whose smallest dihedral angle
 // reaches `angle`. No verdict (true) for `angle` under 1e-6 or over pi / 2.
 bool cones_can_keep_angle(const TetTopology& topo, std::span<const uint32_t> cavity, double angle);
+bool cones_can_keep_angle(const TetTopology& topo, const TetTopology::Ring& ring, double angle);
 
 }  // namespace partet

@@ -192,10 +192,12 @@ std::vector<double> outer_faces(const TetTopology& topo, const std::vector<uint3
 // try_cavity at p, else at the deepest point of the cavity's kernel: a
 // point near a flat tet's plane (its centroid, the rounded midpoint of an
 // edge of a flat ring) may see some of the cavity's outer faces from
-// behind, the kernel's deepest point sees them all.
+// behind, the kernel's deepest point sees them all. With `ring`, the
+// cavity is that ring's tets, and the cone bound reads it from the ring.
 bool try_point_then_kernel(TetTopology& topo, const std::vector<uint32_t>& cavity, const double* p, double bar,
-                           SmoothingScratch& scratch, InsertionRule rule) {
-  if (!cones_can_beat(topo, cavity, worst_quality(topo, cavity))) return false;
+                           SmoothingScratch& scratch, InsertionRule rule, const TetTopology::Ring* ring = nullptr) {
+  const double worst = worst_quality(topo, cavity);
+  if (!(ring ? cones_can_beat(topo, *ring, worst) : cones_can_beat(topo, cavity, worst))) return false;
   if (try_cavity(topo, cavity, p, bar, scratch, rule)) return true;
   const KernelPoint kernel = deepest_kernel_point(outer_faces(topo, cavity));
   return kernel.found && kernel.depth > 0 && try_cavity(topo, cavity, kernel.point, bar, scratch, rule, true);
@@ -210,7 +212,8 @@ bool split_edge(TetTopology& topo, const TetTopology::Ring& ring, double bar, Sm
   const double* a = topo.point(ring.a);
   const double* b = topo.point(ring.b);
   const double middle[3] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-  if (try_point_then_kernel(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule))
+  if (try_point_then_kernel(topo, std::vector<uint32_t>(ring.tets, ring.tets + ring.n), middle, bar, scratch, rule,
+                            &ring))
     return true;
   if (failed) failed->add(topo, ring);
   return false;

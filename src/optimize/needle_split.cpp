@@ -48,7 +48,7 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
   // Where the ring's angle at an outer edge is under twice its smallest, no
   // position of m keeps that smallest angle (cone_bound.hpp): refused
   // before m is made (a third of handle r1's trials, same meshes).
-  if (!cones_can_keep_angle(topo, s.cavity, before.smallest)) return false;
+  if (!cones_can_keep_angle(topo, ring, before.smallest)) return false;
   const uint32_t m = topo.add_vertex(middle, kOptimizerVertexId | topo.num_vertices());
   for (uint32_t c : s.cavity)
     for (uint32_t end : {ring.a, ring.b}) {

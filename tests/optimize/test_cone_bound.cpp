@@ -113,5 +113,36 @@ TEST(ConeBound, NoPointInAStarBeatsIt) {
   EXPECT_GT(below, 0);
 }
 
+// Read from a ring of tets around an edge, the verdicts are those of the
+// cavity's edge table for every bar, the bound's own value included (the
+// same angles bit for bit), on every interior edge of jittered lattices.
+TEST(ConeBound, RingVerdictsAreTheCavitys) {
+  std::mt19937 rng(12);
+  int rings = 0, refused = 0;
+  for (int mesh = 0; mesh < 5; ++mesh) {
+    TetMesh m = jittered_lattice(rng);
+    TetTopology topo(m);
+    for (uint32_t t = 0; t < topo.slots(); ++t)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+          TetTopology::Ring ring;
+          if (!topo.edge_ring(t, i, j, ring)) continue;
+          ++rings;
+          const std::vector<uint32_t> cavity(ring.tets, ring.tets + ring.n);
+          const double bound = cone_quality_bound(topo, cavity);
+          const double angle = smallest_angle(topo, cavity);
+          for (const double scale : {0.5, 0.9, 0.999, 1.0, 1.001, 1.1, 2.0}) {
+            const double worst = std::min(bound, quality_of_angle(45)) * scale;
+            EXPECT_EQ(cones_can_beat(topo, ring, worst), cones_can_beat(topo, cavity, worst)) << t << " " << scale;
+            EXPECT_EQ(cones_can_keep_angle(topo, ring, angle * scale), cones_can_keep_angle(topo, cavity, angle * scale))
+                << t << " " << scale;
+            refused += !cones_can_beat(topo, cavity, worst);
+          }
+        }
+  }
+  EXPECT_GT(rings, 1000);
+  EXPECT_GT(refused, 100);
+}
+
 }  // namespace
 }  // namespace partet
