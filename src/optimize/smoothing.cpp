@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "core/distance.hpp"
 #include "core/predicates.hpp"
@@ -305,19 +304,8 @@ bool relax_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> tets,
     slivers += q < sliver;
   }
   worst = std::min(worst, floor);  // the least quality a trial may leave
-  // The trials test the star's two worst tets first: those are the
-  // likeliest to drop below the worst (the verdict does not depend on the
-  // order; a full sort cost 1.5 % of a run).
   scratch.trial.resize(n);
   scratch.trial_ratio.resize(n);
-  std::vector<size_t>& order = scratch.order;
-  order.resize(n);
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(std::min<size_t>(2, n)), order.end(),
-                    [&](size_t i, size_t j) {
-                      const double qi = topo.quality(tets[i]), qj = topo.quality(tets[j]);
-                      return qi != qj ? qi < qj : i < j;
-                    });
   const double* x = topo.point(v);
   // The star's radius ratio sum at x.
   double sum = 0;
@@ -340,10 +328,9 @@ bool relax_vertex(TetTopology& topo, uint32_t v, std::span<const uint32_t> tets,
       star.qualities(y, scratch.trial);
       int trial_slivers = 0;
       bool keeps = true;
-      for (size_t i = 0; i < n && keeps; ++i) {
-        const double q = scratch.trial[order[i]];
-        keeps = q >= worst;
-        trial_slivers += q < sliver;
+      for (size_t k = 0; k < n && keeps; ++k) {
+        keeps = scratch.trial[k] >= worst;
+        trial_slivers += scratch.trial[k] < sliver;
       }
       if (!keeps || trial_slivers > slivers || !star.positive(y)) continue;
       topo.move_vertex(v, y, tets);

@@ -36,7 +36,6 @@ struct SmoothingScratch {
   std::vector<double> trial_ratio;  // per star tet, its radius ratio at a trial point (relax_vertex)
   std::vector<double> gradient;  // 3 per star tet
   std::vector<size_t> active;    // star tets near the worst
-  std::vector<size_t> order;     // star tets, the two worst first (relax_vertex)
   StarPoints points;             // the star's corners, measured together at trial points
   std::vector<double> odt_terms;  // relax_vertex's circumcentre terms (StarPoints::circumcentre_terms)
 };

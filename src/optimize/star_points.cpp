@@ -2,12 +2,15 @@
 // once per star, the measures by the tet kernels (tet_kernels.hpp).
 #include "optimize/star_points.hpp"
 
+#include <algorithm>
+
 #include "core/predicates.hpp"
 #include "optimize/tet_kernels.hpp"
 
 namespace partet {
 
 void StarPoints::load(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads) {
+  placed_ = false;
   n_ = quads.size() / 4;
   coordinates_.resize(12 * n_);
   corner_of_v_.resize(n_);
@@ -25,6 +28,11 @@ void StarPoints::load(const TetTopology& topo, uint32_t v, std::span<const uint3
 }
 
 void StarPoints::place(const double* x) {
+  // A trial measures one point several ways (radius ratios, qualities,
+  // orientations): v's corners are written once per point.
+  if (placed_ && x[0] == at_[0] && x[1] == at_[1] && x[2] == at_[2]) return;
+  placed_ = true;
+  std::copy_n(x, 3, at_);
   for (size_t k = 0; k < n_; ++k)
     for (int i = 0; i < 3; ++i) coordinates_[(3 * static_cast<size_t>(corner_of_v_[k]) + i) * n_ + k] = x[i];
 }

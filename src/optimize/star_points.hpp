@@ -21,7 +21,7 @@ class StarPoints {
   // The tets `quads` (vertex quadruples, each having v, in their vertex
   // order) with the points of `topo`; v's point is set by place().
   void load(const TetTopology& topo, uint32_t v, std::span<const uint32_t> quads);
-  // Puts v at x in every tet.
+  // Puts v at x in every tet (nothing to do when it is there already).
   void place(const double* x);
   size_t size() const { return n_; }
   // tet_quality of each tet, in out[0 .. size()).
@@ -36,15 +36,13 @@ class StarPoints {
 
  private:
   // Coordinate i of corner j of tet k: coordinates_[(3 * j + i) * n_ + k].
-  TetColumns columns() const {
-    TetColumns p;
-    for (size_t c = 0; c < 12; ++c) p.c[c] = &coordinates_[c * n_];
-    return p;
-  }
+  TetColumns columns() const { return column_view(coordinates_.data(), n_); }
 
   size_t n_ = 0;
   std::vector<double> coordinates_;
   std::vector<uint8_t> corner_of_v_;  // per tet
+  bool placed_ = false;  // v's corners hold at_
+  double at_[3] = {0, 0, 0};
   mutable std::vector<double> signs_;  // all_positive's filter, per tet
 };
 

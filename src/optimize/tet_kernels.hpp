@@ -14,6 +14,13 @@ namespace partet {
 struct TetColumns {
   const double* c[12];
 };
+// The columns of an array holding them one after the other, `stride`
+// apart.
+inline TetColumns column_view(const double* data, size_t stride) {
+  TetColumns p;
+  for (size_t c = 0; c < 12; ++c) p.c[c] = data + c * stride;
+  return p;
+}
 
 // tet_quality (tet_quality.hpp) of each tet, in out[0 .. n).
 void tet_qualities(const TetColumns& p, size_t n, double* out);

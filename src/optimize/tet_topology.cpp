@@ -258,9 +258,7 @@ void TetTopology::measure_qualities() {
   std::vector<uint32_t> block;
   block.reserve(kBlock);
   const auto flush = [&] {
-    TetColumns p;
-    for (int c = 0; c < 12; ++c) p.c[c] = &columns[static_cast<size_t>(c) * kBlock];
-    tet_qualities(p, block.size(), out.data());
+    tet_qualities(column_view(columns.data(), kBlock), block.size(), out.data());
     for (size_t k = 0; k < block.size(); ++k) measures_[block[k]].quality = out[k];
     block.clear();
   };
