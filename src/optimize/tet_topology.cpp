@@ -1,5 +1,5 @@
-// TetTopology (see tet_topology.hpp). Adjacency is built once from the
-// tets of each vertex; replace() relinks only the faces of the new tets,
+// TetTopology (see tet_topology.hpp). Adjacency is built once, the faces
+// matched in slot order through a table of the unmatched ones; replace() relinks only the faces of the new tets,
 // matching them among themselves and against the cavity's outer faces in a
 // small hash table (a linear search over the faces cost an insertion trial
 // as much as smoothing its vertex: 10 % of handle's optimizer).
@@ -50,54 +50,86 @@ TetTopology::TetTopology(TetMesh& mesh) : mesh_(mesh) {
   changed_at_.assign(mesh_.num_vertices(), 0);
   mark_.assign(n, 0);
   measures_.assign(n, {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
-  // The tets of every vertex, then, vertex by vertex, the faces having it
-  // as their smallest vertex, sorted by their other two, so that twins end
-  // up side by side: 16 bytes per tet and a small list per vertex (sorting
-  // all faces at once took 64 bytes per tet).
-  std::vector<uint32_t> first(mesh_.num_vertices() + 1, 0);
-  for (uint32_t v : mesh_.tets) ++first[v + 1];
-  for (size_t v = 0; v < mesh_.num_vertices(); ++v) first[v + 1] += first[v];
-  std::vector<uint32_t> tets_of(first.back());
-  {
-    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-    for (uint32_t t = 0; t < n; ++t)
-      for (int k = 0; k < 4; ++k) {
-        const uint32_t v = tet(t)[k];
-        tets_of[fill[v]++] = t;
-        vertex_tet_[v] = t;
-      }
-  }
-  struct Side {
-    uint64_t others;  // the face's two larger vertices
-    uint32_t code;    // 4 * tet + face
-    bool operator<(const Side& o) const { return others != o.others ? others < o.others : code < o.code; }
-  };
-  std::vector<Side> sides;
-  for (uint32_t v = 0; v < mesh_.num_vertices(); ++v) {
-    sides.clear();
-    for (uint32_t i = first[v]; i < first[v + 1]; ++i) {
-      const uint32_t t = tets_of[i];
-      const uint32_t* vt = tet(t);
-      for (int f = 0; f < 4; ++f) {
-        if (vt[f] == v) continue;  // the face opposite v does not have it
-        const FaceKey key = face_key(vt, f);
-        if (key[0] == v) sides.push_back({uint64_t{key[1]} << 32 | key[2], 4 * t + f});
-      }
-    }
-    std::sort(sides.begin(), sides.end());
-    for (size_t i = 0; i + 1 < sides.size(); ++i) {
-      if (sides[i].others != sides[i + 1].others) continue;
-      PARTET_ASSERT(i + 2 == sides.size() || sides[i + 2].others != sides[i].others,
-                    "a face of the mesh to optimize is shared by more than two tets");
-      link(sides[i].code, sides[i + 1].code);
-      ++i;
-    }
-  }
+  for (uint32_t t = 0; t < n; ++t)
+    if (alive(t))
+      for (int k = 0; k < 4; ++k) vertex_tet_[tet(t)[k]] = t;
+  link_faces();
   on_boundary_.assign(mesh_.num_vertices(), 0);
   for (uint32_t code = 0; code < twin_.size(); ++code) {
     if (twin_[code] != kNone || !alive(code / 4)) continue;
     for (int k = 0; k < 4; ++k)
       if (k != static_cast<int>(code % 4)) on_boundary_[tet(code / 4)[k]] = 1;
+  }
+}
+
+void TetTopology::link_faces() {
+  // The faces not yet matched, in an open-addressing table (linear
+  // probing, at most half full) that a face leaves when its twin comes:
+  // the tets go in slot order, which follows space (tet_order.hpp), so
+  // the table holds about the boundary faces and a frontier, and its
+  // lookups stay in cache where the tets of every vertex, gathered and
+  // sorted (16 bytes per tet), missed it on every vertex's star.
+  struct Open {
+    FaceKey key;
+    uint32_t code;
+  };
+  size_t capacity = 1024;
+  std::vector<Open> table(capacity, Open{{kNone, 0, 0}, 0});
+  size_t used = 0;
+  const auto home = [&](const FaceKey& key) { return hash_triple(key[0], key[1], key[2]) & (capacity - 1); };
+  // Whether tet code / 4 lies on the positive side of face code % 4 taken
+  // in ascending vertex order (its corners in ascending local order have
+  // the tet's own orientation with corner f last for odd f, the opposite
+  // one for even f; sorting them by vertex flips it per inversion). Twins
+  // of a valid mesh lie on opposite sides.
+  const auto outward_sorted = [&](uint32_t code) {
+    const uint32_t* v = tet(code / 4);
+    const int f = static_cast<int>(code % 4);
+    int order[3], m = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != f) order[m++] = k;
+    const int inversions = (v[order[0]] > v[order[1]]) + (v[order[1]] > v[order[2]]) + (v[order[0]] > v[order[2]]);
+    return (inversions % 2 == 1) == (f % 2 == 0);
+  };
+  for (uint32_t t = 0; t < slots(); ++t) {
+    if (!alive(t)) continue;
+    for (int f = 0; f < 4; ++f) {
+      const uint32_t code = 4 * t + f;
+      const FaceKey key = face_key(tet(t), f);
+      size_t s = home(key);
+      const auto same = [&](const FaceKey& other) {
+        return other[0] == key[0] && other[1] == key[1] && other[2] == key[2];
+      };
+      while (table[s].key[0] != kNone && !same(table[s].key)) s = (s + 1) & (capacity - 1);
+      if (table[s].key[0] == kNone) {
+        table[s] = {key, code};
+        if (2 * ++used > capacity) {
+          std::vector<Open> old(2 * capacity, Open{{kNone, 0, 0}, 0});
+          old.swap(table);
+          capacity *= 2;
+          for (const Open& e : old) {
+            if (e.key[0] == kNone) continue;
+            size_t i = home(e.key);
+            while (table[i].key[0] != kNone) i = (i + 1) & (capacity - 1);
+            table[i] = e;
+          }
+        }
+        continue;
+      }
+      PARTET_ASSERT(outward_sorted(code) != outward_sorted(table[s].code),
+                    "two tets of the mesh to optimize lie on the same side of a face");
+      link(code, table[s].code);
+      // Backward-shift deletion: the entries after s that probed past it
+      // move back, so no lookup needs a tombstone.
+      size_t hole = s;
+      for (size_t j = (s + 1) & (capacity - 1); table[j].key[0] != kNone; j = (j + 1) & (capacity - 1))
+        if (((j - home(table[j].key)) & (capacity - 1)) >= ((j - hole) & (capacity - 1))) {
+          table[hole] = table[j];
+          hole = j;
+        }
+      table[hole].key[0] = kNone;
+      --used;
+    }
   }
 }
 

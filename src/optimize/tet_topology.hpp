@@ -150,6 +150,8 @@ class TetTopology {
   void compact();
 
  private:
+  // Links every face to its twin (the constructor's).
+  void link_faces();
   void link(uint32_t code, uint32_t other) {
     twin_[code] = other;
     if (other != kNone) twin_[other] = code;

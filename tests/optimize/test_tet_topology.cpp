@@ -2,7 +2,8 @@
 // vertex smoothed in its would-be star (smooth_new_vertex) lands where
 // smooth_vertex takes it once the star is in the mesh, and a failed
 // insertion leaves every slot, every vertex star (and its walk order) and
-// every change mark as they were; the neighbours of a star come each
+// every change mark as they were; the constructor links each face to the
+// other tet on it; the neighbours of a star come each
 // once, ascending (star_neighbours); the change marks name exactly the
 // tets whose vertex stars a move or a replace touched.
 #include <gtest/gtest.h>
@@ -10,8 +11,10 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <map>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/predicates.hpp"
 #include "optimize/insertion.hpp"
 #include "optimize/smoothing.hpp"
@@ -64,6 +67,44 @@ std::vector<uint32_t> cone_tets(const TetTopology& topo, const std::vector<uint3
       new_tets[new_tets.size() - 4 + f] = v;
     }
   return new_tets;
+}
+
+// Every face is linked to the other tet having its three vertices, or to
+// none on the boundary; the 8 x 8 x 8 lattice leaves more faces unmatched
+// at a time than the builder's first table holds.
+TEST(TetTopology, TwinsAreTheTetsSharingEachFace) {
+  TetMesh mesh = test::kuhn_lattice(8);
+  std::map<std::array<uint32_t, 3>, std::vector<uint32_t>> sides;
+  for (uint32_t t = 0; t < mesh.num_tets(); ++t)
+    for (uint32_t f = 0; f < 4; ++f) {
+      std::array<uint32_t, 3> key;
+      int n = 0;
+      for (uint32_t k = 0; k < 4; ++k)
+        if (k != f) key[n++] = mesh.tets[4 * t + k];
+      std::sort(key.begin(), key.end());
+      sides[key].push_back(4 * t + f);
+    }
+  const TetTopology topo(mesh);
+  size_t boundary = 0;
+  for (const auto& [key, codes] : sides) {
+    ASSERT_LE(codes.size(), 2u);
+    if (codes.size() == 1) {
+      EXPECT_EQ(topo.twin(codes[0]), TetTopology::kNone);
+      ++boundary;
+      continue;
+    }
+    EXPECT_EQ(topo.twin(codes[0]), codes[1]);
+    EXPECT_EQ(topo.twin(codes[1]), codes[0]);
+  }
+  EXPECT_EQ(boundary, 6u * 8 * 8 * 2);
+}
+
+// A tet listed twice lies on the same side of each of its faces as its
+// copy: the builder refuses the mesh instead of linking them.
+TEST(TetTopology, TwoTetsOnOneSideOfAFaceAreAnInternalError) {
+  TetMesh mesh = test::kuhn_lattice(1);
+  mesh.tets.insert(mesh.tets.end(), mesh.tets.begin(), mesh.tets.begin() + 4);
+  EXPECT_THROW(TetTopology topo(mesh), InternalError);
 }
 
 TEST(TetTopology, ATrialVertexSmoothsAsInTheMesh) {
