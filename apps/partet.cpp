@@ -69,6 +69,10 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_flag("--no-gap-vertices", no_gap_vertices,
                "Give the face removals no vertices at the centres of the leaves between the surface and the "
                "templated core (faster on thin CAD walls, worse tets elsewhere)");
+  bool no_offset_vertices = false;
+  app.add_flag("--no-offset-vertices", no_offset_vertices,
+               "Place no vertices inward from the surface vertices along their normals where the gap has room "
+               "(they lift the first layer of tets, most on thin CAD walls)");
   bool no_delaunay_fill = false;
   app.add_flag("--no-delaunay-fill", no_delaunay_fill,
                "Do not fill the volume with a Delaunay tetrahedralization of the front's vertices before the face "
@@ -101,6 +105,7 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   if (no_optimize) o.optimize_passes = 0;
   o.treeless = !no_treeless;
   o.gap_vertices = !no_gap_vertices;
+  o.offset_vertices = !no_offset_vertices;
   o.delaunay_fill = !no_delaunay_fill;
   if (partitioner == "rob") o.partitioner = partet::BisectionMethod::kRob;
   if (partitioner == "rib") o.partitioner = partet::BisectionMethod::kRib;

@@ -25,6 +25,7 @@
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/gap_vertices.hpp"
+#include "front/offset_vertices.hpp"
 #include "front/initial_front.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
@@ -479,8 +480,11 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
     report.run_step("initial front", [&] {
       if (!s.whole) return ojson::object();
       s.initial_front = make_initial_front(s.tree, s.root, s.core, s.surface);
+      size_t offset = 0;
       if (options.gap_vertices) {
-        const GapVertices gap = gap_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close);
+        GapVertices gap = gap_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close);
+        if (options.offset_vertices)
+          offset = add_offset_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close, s.initial_front, gap);
         add_free_vertices(s.initial_front, s.tree, gap.xyz, gap.global_ids, gap.leaf);
       }
       const InitialFront& front = s.initial_front;
@@ -491,6 +495,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       c["surface faces"] = front.surface_faces;
       c["core faces"] = front.num_faces() - front.surface_faces;
       c["gap vertices"] = front.free_vertices;
+      c["offset vertices"] = offset;
       return c;
     });
     if (options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&

@@ -29,6 +29,7 @@ struct MeshOptions {
   int optimize_passes = 3;     // --optimize N: quality optimization passes (0, or --no-optimize: none)
   double quality_target = 40;  // --quality-target X: degrees; tets with all dihedral angles in [X, 180-X] are left alone
   bool gap_vertices = true;   // --no-gap-vertices: no vertices at leaf centres in the gap (gap_vertices.hpp)
+  bool offset_vertices = true;  // --no-offset-vertices: none offset inward from the surface (offset_vertices.hpp)
   bool delaunay_fill = true;  // --no-delaunay-fill: the face removals fill the whole gap (delaunay_fill.hpp)
   bool treeless = true;       // --no-treeless: stop after the tree-supported removals
   // --treeless-on-ranks: on P > 1 ranks the tree-less removals run on every

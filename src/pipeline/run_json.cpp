@@ -30,6 +30,7 @@ ojson options_json(const MeshOptions& o) {
   j["min_core"] = o.min_core;
   j["partitioner"] = bisection_name(o.partitioner);
   j["gap_vertices"] = o.gap_vertices;
+  j["offset_vertices"] = o.offset_vertices;
   j["delaunay_fill"] = o.delaunay_fill;
   j["treeless"] = o.treeless;
   j["treeless_on_ranks"] = o.treeless_on_ranks;

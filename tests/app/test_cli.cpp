@@ -183,8 +183,9 @@ TEST(Cli, ThinBodyGetsAFinerCore) {
   // The ellipsoid's 320 triangles leave no leaf far enough from the surface
   // for a core: its sizes are refined once, and the tets across the body
   // give way to a core and much better tets on the whole (mean radius
-  // ratio 0.70 -> 0.78; 0.50 -> 0.73 before gap vertices gave the
-  // unrefined body vertices of its own). The smallest angle, set by a few
+  // ratio 0.74 -> 0.78; 0.70 -> 0.77 before the offset gap vertices gave
+  // the unrefined body its first layer, 0.50 -> 0.73 before gap vertices
+  // gave it vertices of its own). The smallest angle, set by a few
   // tets against the surface, moves with the tree-less removals either way
   // (30.9 -> 31.4 degrees, 30.9 -> 29.1 since they try short growth first;
   // 9.5 -> 29.1 before gap vertices): it stays well above the 10 degrees
@@ -210,7 +211,7 @@ TEST(Cli, ThinBodyGetsAFinerCore) {
     return report_step(report, "optimize")["counts"][std::string(what) + " after"].get<double>();
   };
   EXPECT_GT(after(j, "min dihedral"), 25.0);
-  EXPECT_GT(after(j, "mean radius ratio"), after(o, "mean radius ratio") + 0.05);
+  EXPECT_GT(after(j, "mean radius ratio"), after(o, "mean radius ratio") + 0.03);
 }
 
 TEST(Cli, AFrontThatDoesNotCloseOnTheRefinedTreeIsMeshedOnTheFirst) {

@@ -1,5 +1,6 @@
 // The pipeline of src/pipeline/mesh_command.cpp up to the templates
-// (Built), on to the initial front with gap vertices (FrontCase) and the
+// (Built), on to the initial front with gap vertices, leaf centres and
+// offset ones (FrontCase), and the
 // removals that close it (close_front), on one rank, for the front's
 // tests.
 #pragma once
@@ -10,6 +11,7 @@
 #include "front/face_removal.hpp"
 #include "front/front.hpp"
 #include "front/gap_vertices.hpp"
+#include "front/offset_vertices.hpp"
 #include "front/initial_front.hpp"
 #include "front/treeless_removal.hpp"
 #include "io/mesh_file.hpp"
@@ -60,6 +62,7 @@ inline FrontCase front_case_of(Built built) {
   FrontCase c{std::move(built), {}, {}};
   c.initial = make_initial_front(c.b.tree, c.b.root, c.b.core, c.b.surface);
   c.gap = gap_vertices(c.b.tree, c.b.root, c.b.surface, c.b.sizing.size, 0.5);
+  add_offset_vertices(c.b.tree, c.b.root, c.b.surface, c.b.sizing.size, 0.5, c.initial, c.gap);
   add_free_vertices(c.initial, c.b.tree, c.gap.xyz, c.gap.global_ids, c.gap.leaf);
   return c;
 }

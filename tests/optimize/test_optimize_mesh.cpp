@@ -217,7 +217,9 @@ TEST(OptimizeMesh, MultiFaceSweepMakesNothingWorse) {
     no_sweep.multi_face_sweep = false;
     const OptimizeStats base = optimize_mesh(passes_only, no_sweep);
     EXPECT_EQ(base.multi_face_removals, 0u) << name;
-    EXPECT_GE(stats.after.min_dihedral_deg, base.after.min_dihedral_deg) << name;
+    // The smallest angle may be the same tet's, listed with its corners in
+    // another order and so rounded differently (ellipsoid: 4e-15 degrees).
+    EXPECT_GE(stats.after.min_dihedral_deg, base.after.min_dihedral_deg - 1e-9) << name;
     EXPECT_LE(stats.after.dihedral_under_10, base.after.dihedral_under_10) << name;
     EXPECT_GE(stats.after.radius_ratio_mean, base.after.radius_ratio_mean - 1e-12) << name;
     EXPECT_TRUE(validate_mesh(mesh, nullptr).valid) << name;
@@ -292,9 +294,13 @@ Comparison compare_options(const char* name, Disable disable, const OptimizeOpti
 // leave the slots alone, lever's rounds ended at 0.28 either way); since
 // the later passes work on fewer tets (optimize.cpp, kLaterPassAngles)
 // u's end at 0.11 either way and lever's lift again, 0.31 -> 0.68 (for
-// more tets under 10 degrees: 437 -> 949 of 12,000).
+// more tets under 10 degrees: 437 -> 949 of 12,000). With the offset gap
+// vertices (offset_vertices.hpp) lever's removals leave fewer flat tets
+// and its rounds end at 0.13 degrees either way; the test meshes it
+// without them (0.31 -> 0.68 again).
 TEST(OptimizeMesh, FlatTetRoundsLiftTheSmallestAngle) {
-  const Comparison c = compare_options("good/lever.stl", [](OptimizeOptions& o) { o.flat_tet_rounds = 0; });
+  const Comparison c =
+      compare_options("good/lever.stl", [](OptimizeOptions& o) { o.flat_tet_rounds = 0; }, {}, "--no-offset-vertices");
   EXPECT_LT(c.on.before.min_dihedral_deg, 1e-6);
   EXPECT_GT(c.on.after.min_dihedral_deg, 0.35);
   EXPECT_GT(c.on.after.min_dihedral_deg, c.off.after.min_dihedral_deg + 0.15);

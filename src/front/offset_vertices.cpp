@@ -1,0 +1,147 @@
+// add_offset_vertices (see offset_vertices.hpp): candidates at the offset
+// points that fall in gap leaves; then, vertex by vertex, a surface
+// triangle (binned by leaf), a template vertex, a leaf centre or an offset
+// point kept before near a candidate drops it (range queries over the
+// tree, points listed by leaf), and the ray parity test keeps those inside.
+#include "front/offset_vertices.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "core/distance.hpp"
+#include "octree/inside_index.hpp"
+#include "octree/range_query.hpp"
+#include "octree/triangle_bins.hpp"
+
+namespace partet {
+namespace {
+
+// Items (points) by the leaf holding each, in item order within a leaf.
+struct LeafLists {
+  std::vector<uint32_t> first, items;
+
+  LeafLists(size_t leaves, const std::vector<uint32_t>& leaf_of) : first(leaves + 1, 0), items(leaf_of.size()) {
+    for (uint32_t leaf : leaf_of) ++first[leaf + 1];
+    for (size_t i = 0; i < leaves; ++i) first[i + 1] += first[i];
+    std::vector<uint32_t> next(first.begin(), first.end() - 1);
+    for (uint32_t i = 0; i < leaf_of.size(); ++i) items[next[leaf_of[i]]++] = i;
+  }
+  template <class Visit>
+  void for_each(size_t leaf, Visit visit) const {
+    for (uint32_t k = first[leaf]; k < first[leaf + 1]; ++k) visit(items[k]);
+  }
+};
+
+double squared_distance(const double* a, const double* b) {
+  double sum = 0;
+  for (int i = 0; i < 3; ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return sum;
+}
+
+// The area normals summed per vertex (outward: the surface is diagnosed).
+std::vector<double> vertex_normals(const SurfaceMesh& surface) {
+  std::vector<double> normal(3 * surface.num_vertices(), 0.0);
+  for (size_t t = 0; t < surface.num_triangles(); ++t) {
+    const uint32_t* v = &surface.tris[3 * t];
+    const double *a = surface.point(v[0]), *b = surface.point(v[1]), *c = surface.point(v[2]);
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) normal[3 * size_t{v[k]} + i] += n[i];
+  }
+  return normal;
+}
+
+}  // namespace
+
+size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const SurfaceMesh& surface,
+                         const std::vector<double>& vertex_size, double gap, const InitialFront& front,
+                         GapVertices& gap_vertices) {
+  if (!(gap > 0)) return 0;
+  const std::vector<double> normal = vertex_normals(surface);
+  std::vector<double> xyz;  // 3 per candidate
+  std::vector<uint32_t> vertex, leaf;
+  for (uint32_t v = 0; v < surface.num_vertices(); ++v) {
+    const double* n = &normal[3 * size_t{v}];
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(length > 0)) continue;
+    const double step = kOffsetHeight * vertex_size[v] / length;
+    double p[3];
+    for (int i = 0; i < 3; ++i) p[i] = surface.point(v)[i] - step * n[i];
+    const uint32_t in = leaf_of_point(tree, root, p);
+    if (tree.cls[in] != LeafClass::kBoundary && tree.cls[in] != LeafClass::kTooClose) continue;
+    xyz.insert(xyz.end(), p, p + 3);
+    vertex.push_back(v);
+    leaf.push_back(in);
+  }
+  if (vertex.empty()) return 0;
+  const auto point = [&](uint32_t c) { return &xyz[3 * size_t{c}]; };
+
+  std::vector<uint8_t> kept(vertex.size(), 0);
+  const LeafLists candidates(tree.size(), leaf);
+  const LeafRangeQuery query(tree);
+  const LeafTriangles bins = bin_triangles(tree, surface, root);
+
+  // The template vertices and the leaf centres, by leaf.
+  const size_t core = front.core_vertices;
+  std::vector<uint32_t> lattice_leaf(front.vertex_leaf.begin(), front.vertex_leaf.begin() + core);
+  lattice_leaf.insert(lattice_leaf.end(), gap_vertices.leaf.begin(), gap_vertices.leaf.end());
+  const LeafLists lattice(tree.size(), lattice_leaf);
+  const auto lattice_point = [&](uint32_t i) {
+    return i < core ? &front.xyz[3 * size_t{i}] : &gap_vertices.xyz[3 * (size_t{i} - core)];
+  };
+  std::vector<size_t> near;
+  // Whether a point of `lists` (at `at`, accepted by `counts`) lies within
+  // `radius` of p.
+  // The leaves over the box of the ball of `radius` about p, in `near`.
+  const auto leaves_near = [&](const double* p, double radius) {
+    const double lo[3] = {p[0] - radius, p[1] - radius, p[2] - radius};
+    const double hi[3] = {p[0] + radius, p[1] + radius, p[2] + radius};
+    uint32_t glo[3], ghi[3];
+    grid_range(root, lo, hi, glo, ghi);
+    query.leaves_in_range(glo, ghi, near);
+  };
+  // Whether a point of `lists` (at `at`, accepted by `counts`) lies within
+  // `radius` of p.
+  const auto any_within = [&](const double* p, double radius, const LeafLists& lists, auto at, auto counts) {
+    leaves_near(p, radius);
+    bool found = false;
+    for (size_t l : near)
+      lists.for_each(l, [&](uint32_t i) {
+        found = found || (counts(i) && squared_distance(at(i), p) < radius * radius);
+      });
+    return found;
+  };
+  // Whether a surface triangle lies within `radius` of p (it meets a
+  // leaf over the ball's box: the boundary leaves list it).
+  const auto surface_within = [&](const double* p, double radius) {
+    leaves_near(p, radius);
+    for (size_t l : near)
+      for (uint32_t k = bins.first[l]; k < bins.first[l + 1]; ++k) {
+        const uint32_t* v = &surface.tris[3 * size_t{bins.tris[k]}];
+        if (squared_point_triangle_distance(p, surface.point(v[0]), surface.point(v[1]), surface.point(v[2])) <
+            radius * radius)
+          return true;
+      }
+    return false;
+  };
+  std::optional<RayParityIndex> parity;
+  const size_t before = gap_vertices.size();
+  for (uint32_t c = 0; c < vertex.size(); ++c) {
+    const double s = vertex_size[vertex[c]];
+    kept[c] = !surface_within(point(c), gap * s) &&
+              !any_within(point(c), kOffsetBlock * s, lattice, lattice_point, [](uint32_t) { return true; }) &&
+              !any_within(point(c), kOffsetSpacing * s, candidates, point, [&](uint32_t o) { return o < c && kept[o]; });
+    if (!kept[c]) continue;
+    if (!parity) parity.emplace(surface);
+    kept[c] = parity->inside(point(c));
+    if (!kept[c]) continue;
+    gap_vertices.xyz.insert(gap_vertices.xyz.end(), point(c), point(c) + 3);
+    gap_vertices.global_ids.push_back(kOffsetVertexId | vertex[c]);
+    gap_vertices.leaf.push_back(leaf[c]);
+  }
+  return gap_vertices.size() - before;
+}
+
+}  // namespace partet
