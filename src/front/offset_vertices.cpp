@@ -1,10 +1,12 @@
 // add_offset_vertices (see offset_vertices.hpp): candidates at the offset
-// points that fall in gap leaves; then, vertex by vertex, a surface
-// triangle (binned by leaf), a template vertex, a leaf centre or an offset
-// point kept before near a candidate drops it (range queries over the
-// tree, points listed by leaf), and the ray parity test keeps those inside.
+// points that fall in gap leaves; then, vertex by vertex, one range query
+// over the tree gives the leaves near a candidate, a template vertex or a
+// leaf centre (listed by leaf), a surface triangle (binned by leaf) or an
+// offset point kept before too near drops it, and the ray parity test
+// keeps those inside.
 #include "front/offset_vertices.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -91,48 +93,37 @@ size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const
   const auto lattice_point = [&](uint32_t i) {
     return i < core ? &front.xyz[3 * size_t{i}] : &gap_vertices.xyz[3 * (size_t{i} - core)];
   };
+  // Per candidate, the leaves over the box of its widest ball: then the
+  // lattice points (most candidates on smooth bodies stop there), the
+  // surface triangles (the boundary leaves list them) and the offset
+  // points kept before, each within its own radius.
+  const double widest = std::max({kOffsetBlock, gap, kOffsetSpacing});
   std::vector<size_t> near;
-  // Whether a point of `lists` (at `at`, accepted by `counts`) lies within
-  // `radius` of p.
-  // The leaves over the box of the ball of `radius` about p, in `near`.
-  const auto leaves_near = [&](const double* p, double radius) {
-    const double lo[3] = {p[0] - radius, p[1] - radius, p[2] - radius};
-    const double hi[3] = {p[0] + radius, p[1] + radius, p[2] + radius};
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    query.leaves_in_range(glo, ghi, near);
-  };
-  // Whether a point of `lists` (at `at`, accepted by `counts`) lies within
-  // `radius` of p.
-  const auto any_within = [&](const double* p, double radius, const LeafLists& lists, auto at, auto counts) {
-    leaves_near(p, radius);
-    bool found = false;
-    for (size_t l : near)
-      lists.for_each(l, [&](uint32_t i) {
-        found = found || (counts(i) && squared_distance(at(i), p) < radius * radius);
-      });
-    return found;
-  };
-  // Whether a surface triangle lies within `radius` of p (it meets a
-  // leaf over the ball's box: the boundary leaves list it).
-  const auto surface_within = [&](const double* p, double radius) {
-    leaves_near(p, radius);
-    for (size_t l : near)
-      for (uint32_t k = bins.first[l]; k < bins.first[l + 1]; ++k) {
-        const uint32_t* v = &surface.tris[3 * size_t{bins.tris[k]}];
-        if (squared_point_triangle_distance(p, surface.point(v[0]), surface.point(v[1]), surface.point(v[2])) <
-            radius * radius)
-          return true;
-      }
-    return false;
-  };
   std::optional<RayParityIndex> parity;
   const size_t before = gap_vertices.size();
   for (uint32_t c = 0; c < vertex.size(); ++c) {
+    const double* p = point(c);
     const double s = vertex_size[vertex[c]];
-    kept[c] = !surface_within(point(c), gap * s) &&
-              !any_within(point(c), kOffsetBlock * s, lattice, lattice_point, [](uint32_t) { return true; }) &&
-              !any_within(point(c), kOffsetSpacing * s, candidates, point, [&](uint32_t o) { return o < c && kept[o]; });
+    const double lo[3] = {p[0] - widest * s, p[1] - widest * s, p[2] - widest * s};
+    const double hi[3] = {p[0] + widest * s, p[1] + widest * s, p[2] + widest * s};
+    uint32_t glo[3], ghi[3];
+    grid_range(root, lo, hi, glo, ghi);
+    query.leaves_in_range(glo, ghi, near);
+    const double block = kOffsetBlock * s, clear = gap * s, spacing = kOffsetSpacing * s;
+    bool free = true;
+    for (size_t l = 0; l < near.size() && free; ++l)
+      lattice.for_each(near[l], [&](uint32_t i) { free = free && squared_distance(lattice_point(i), p) >= block * block; });
+    for (size_t l = 0; l < near.size() && free; ++l)
+      for (uint32_t k = bins.first[near[l]]; k < bins.first[near[l] + 1] && free; ++k) {
+        const uint32_t* v = &surface.tris[3 * size_t{bins.tris[k]}];
+        free = squared_point_triangle_distance(p, surface.point(v[0]), surface.point(v[1]), surface.point(v[2])) >=
+               clear * clear;
+      }
+    for (size_t l = 0; l < near.size() && free; ++l)
+      candidates.for_each(near[l], [&](uint32_t o) {
+        free = free && !(o < c && kept[o] && squared_distance(point(o), p) < spacing * spacing);
+      });
+    kept[c] = free;
     if (!kept[c]) continue;
     if (!parity) parity.emplace(surface);
     kept[c] = parity->inside(point(c));
