@@ -1,6 +1,7 @@
-// remove_faces_treeless: the short-growth and default strategies' rounds,
-// then, while faces are left, the rescue strategies' rounds, each from the
-// starting state (see treeless_removal.hpp, "Short growth first" and
+// remove_faces_treeless: the short-growth and default strategies' rounds
+// (the default going on from where short growth stalled when it left few
+// faces), then, while faces are left, the rescue strategies' rounds, each
+// from the starting state (see treeless_removal.hpp, "Short growth first" and
 // "Rescue"); the rounds themselves are in
 // treeless_rounds.cpp.
 #include "front/treeless_removal.hpp"
@@ -80,6 +81,14 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
     faces_left.push_back(n.faces_left);
     n.faces_left_by_attempt = faces_left;
     if (n.faces_left == 0) return n;
+    // Short growth stalled with a few stuck cavities: the default goes on
+    // from there before the attempts start over.
+    if (strategy == TreelessStrategy::kShortGrowth && n.faces_left <= options.go_on_faces) {
+      n = run_treeless_rounds(front, tree, root, out, options, m, TreelessStrategy::kDefault);
+      faces_left.push_back(n.faces_left);
+      n.faces_left_by_attempt = faces_left;
+      if (n.faces_left == 0) return n;
+    }
   }
   // None closed the front: the attempt that left the fewest faces (the
   // earliest on ties), run again from the start unless it is the last one

@@ -77,9 +77,16 @@
 // on the corpus refinements, at most 5 rounds apart on pinion r2), and the
 // front, `out`, the tree's leaf classes and `memo` are restored for the
 // default, as for the rescues below: where short growth fails, the mesh is
-// the one the default makes alone. (Going on from where it stalled instead
-// closed joint r3 sooner, 36.7 -> 25.8 s, but into a mesh whose flat sheet
-// the optimizer could not lift: 3e-10 degrees instead of 1.0.)
+// the one the default makes alone. But where it stalls with at most
+// options.go_on_faces (64) faces left, a few stuck cavities, the default
+// first goes on from there, and the restart comes only when that fails
+// too: the offset gap vertices (offset_vertices.hpp) left t13_data r3's
+// short growth with 10 faces, and the default from the start then
+// stalled, as did two rescues (172 s; going on: 15 s); femur r3 41 -> 32
+// s. (Going on whatever the faces left closed joint r3 sooner, 36.7 ->
+// 25.8 s, when its short growth stalled with 16 faces, but into a mesh
+// whose flat sheet the optimizer could not lift then: 3e-10 degrees
+// instead of 1.0.)
 //
 // Rescue: the rounds are chaotic (a change to how a cavity is treated
 // closes one input and stalls another), so other strategies run only where

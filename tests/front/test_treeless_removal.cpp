@@ -206,6 +206,30 @@ TEST(FrontTreeless, ShortGrowthClosesInFewerRounds) {
   EXPECT_LT(short_first.counts.tets_deleted, default_only.counts.tets_deleted);
 }
 
+// spool with short growth stalling after one round without a smaller
+// front: it stops with 52 faces left. With go_on_faces under that the
+// default starts over from the call's start; at 52 or more it goes on
+// from where short growth stopped, and closes with fewer fills and fewer
+// tets deleted than from the start (6 and 146 against 22 and 326).
+TEST(FrontTreeless, TheDefaultGoesOnFromAFewStuckFaces) {
+  const SurfaceMesh spool = read_surface_file(data_path("good/spool.off"));
+  RemovalOptions restart;
+  restart.stall_rounds = 1;
+  restart.rescues = 0;
+  restart.go_on_faces = 51;
+  const Meshed over = mesh_surface(spool, "good/spool.off, stall 1, start over", restart);
+  RemovalOptions go_on = restart;
+  go_on.go_on_faces = 52;
+  const Meshed on = mesh_surface(spool, "good/spool.off, stall 1, go on", go_on);
+  EXPECT_EQ(over.counts.faces_left_by_attempt, (std::vector<size_t>{52, 0}));
+  EXPECT_EQ(on.counts.faces_left_by_attempt, (std::vector<size_t>{52, 0}));
+  EXPECT_EQ(over.counts.strategy, TreelessStrategy::kDefault);
+  EXPECT_EQ(on.counts.strategy, TreelessStrategy::kDefault);
+  EXPECT_LT(on.counts.star_fills, over.counts.star_fills);
+  EXPECT_LT(on.counts.tets_deleted, over.counts.tets_deleted);
+  EXPECT_EQ(on.faces_left, 0u);
+}
+
 // `s` scaled by `factor` about the origin, then moved by (dx, dy, dz).
 SurfaceMesh placed(SurfaceMesh s, double factor, double dx, double dy, double dz) {
   for (size_t v = 0; v < s.num_vertices(); ++v) {
