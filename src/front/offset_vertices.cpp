@@ -58,8 +58,8 @@ std::vector<double> vertex_normals(const SurfaceMesh& surface) {
 }  // namespace
 
 size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const SurfaceMesh& surface,
-                         const std::vector<double>& vertex_size, double gap, const InitialFront& front,
-                         GapVertices& gap_vertices) {
+                           const std::vector<double>& vertex_size, double gap, const InitialFront& front,
+                           GapVertices& gap_vertices, const LeafTriangles* bins) {
   if (!(gap > 0)) return 0;
   const std::vector<double> normal = vertex_normals(surface);
   std::vector<double> xyz;  // 3 per candidate
@@ -83,7 +83,11 @@ size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const
   std::vector<uint8_t> kept(vertex.size(), 0);
   const LeafLists candidates(tree.size(), leaf);
   const LeafRangeQuery query(tree);
-  const LeafTriangles bins = bin_triangles(tree, surface, root);
+  LeafTriangles own_bins;
+  if (!bins) {
+    own_bins = bin_triangles(tree, surface, root);
+    bins = &own_bins;
+  }
 
   // The template vertices and the leaf centres, by leaf.
   const size_t core = front.core_vertices;
@@ -114,8 +118,8 @@ size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const
     for (size_t l = 0; l < near.size() && free; ++l)
       lattice.for_each(near[l], [&](uint32_t i) { free = free && squared_distance(lattice_point(i), p) >= block * block; });
     for (size_t l = 0; l < near.size() && free; ++l)
-      for (uint32_t k = bins.first[near[l]]; k < bins.first[near[l] + 1] && free; ++k) {
-        const uint32_t* v = &surface.tris[3 * size_t{bins.tris[k]}];
+      for (uint32_t k = bins->first[near[l]]; k < bins->first[near[l] + 1] && free; ++k) {
+        const uint32_t* v = &surface.tris[3 * size_t{bins->tris[k]}];
         free = squared_point_triangle_distance(p, surface.point(v[0]), surface.point(v[1]), surface.point(v[2])) >=
                clear * clear;
       }

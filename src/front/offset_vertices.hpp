@@ -37,6 +37,7 @@
 #include "front/gap_vertices.hpp"
 #include "front/initial_front.hpp"
 #include "octree/octree.hpp"
+#include "octree/triangle_bins.hpp"
 #include "surface/surface_mesh.hpp"
 
 namespace partet {
@@ -49,10 +50,11 @@ inline constexpr double kOffsetSpacing = 0.5;
 // Appends the offset points of `surface` (with target sizes `vertex_size`,
 // and the tree classified from it with threshold `gap`) to `gap_vertices`,
 // whose other points, with the template vertices of `front` (the first
-// front.core_vertices, before any free vertex is added), block them. The
-// number appended.
+// front.core_vertices, before any free vertex is added), block them.
+// `bins`: bin_triangles(tree, surface, root) when the caller has it (else
+// it is made here). The number appended.
 size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const SurfaceMesh& surface,
-                         const std::vector<double>& vertex_size, double gap, const InitialFront& front,
-                         GapVertices& gap_vertices);
+                           const std::vector<double>& vertex_size, double gap, const InitialFront& front,
+                           GapVertices& gap_vertices, const LeafTriangles* bins = nullptr);
 
 }  // namespace partet

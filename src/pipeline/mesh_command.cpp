@@ -26,6 +26,7 @@
 #include "front/front.hpp"
 #include "front/gap_vertices.hpp"
 #include "front/offset_vertices.hpp"
+#include "octree/triangle_bins.hpp"
 #include "front/initial_front.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
@@ -80,6 +81,10 @@ struct MeshState {
   BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
   bool whole = false;
   bool thin_core_refined = false;  // refine_thin_core changed the sizes
+  // On one rank, the triangles binned into the tree's leaves by the last
+  // classification, for the offset gap vertices (the leaves do not change
+  // after it); freed with the initial front.
+  LeafTriangles bins;
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
 };
@@ -246,8 +251,9 @@ ojson build_tree_distributed(MeshState& s, const MeshOptions& o, const Comm& com
 ojson classify(MeshState& s, const MeshOptions& o, const Comm& comm) {
   ClassifyOptions options;
   options.too_close = o.too_close;
+  if (comm.size() == 1) s.bins = bin_triangles(s.tree, s.surface, s.root);
   ClassCounts n = comm.size() > 1 ? classify_distributed(comm, s.own, s.surface, s.root, s.sizing.size, options)
-                                  : classify_leaves(s.tree, s.surface, s.root, s.sizing.size, options);
+                                  : classify_leaves(s.tree, s.surface, s.root, s.sizing.size, s.bins, options);
   ojson c;
   c["boundary"] = n.boundary;
   c["too close"] = n.too_close;
@@ -484,9 +490,11 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       if (options.gap_vertices) {
         GapVertices gap = gap_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close);
         if (options.offset_vertices)
-          offset = add_offset_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close, s.initial_front, gap);
+          offset = add_offset_vertices(s.tree, s.root, s.surface, s.sizing.size, options.too_close, s.initial_front,
+                                       gap, s.bins.first.size() == s.tree.size() + 1 ? &s.bins : nullptr);
         add_free_vertices(s.initial_front, s.tree, gap.xyz, gap.global_ids, gap.leaf);
       }
+      s.bins = LeafTriangles{};
       const InitialFront& front = s.initial_front;
       if (!root_rank) return ojson::object();
       if (!options.front_out.empty()) write_surface_file(front_surface(front), options.front_out, {options.ascii});
