@@ -127,12 +127,11 @@ size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const
       candidates.for_each(near[l], [&](uint32_t o) {
         free = free && !(o < c && kept[o] && squared_distance(point(o), p) < spacing * spacing);
       });
-    kept[c] = free;
-    if (!kept[c]) continue;
+    if (!free) continue;
     if (!parity) parity.emplace(surface);
-    kept[c] = parity->inside(point(c));
-    if (!kept[c]) continue;
-    gap_vertices.xyz.insert(gap_vertices.xyz.end(), point(c), point(c) + 3);
+    if (!parity->inside(p)) continue;
+    kept[c] = 1;
+    gap_vertices.xyz.insert(gap_vertices.xyz.end(), p, p + 3);
     gap_vertices.global_ids.push_back(kOffsetVertexId | vertex[c]);
     gap_vertices.leaf.push_back(leaf[c]);
   }

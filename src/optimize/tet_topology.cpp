@@ -1,7 +1,7 @@
 // TetTopology (see tet_topology.hpp). Adjacency is built once, the faces
-// matched in slot order through a table of the unmatched ones; replace() relinks only the faces of the new tets,
-// matching them among themselves and against the cavity's outer faces in a
-// small hash table (a linear search over the faces cost an insertion trial
+// matched in slot order through a table of the unmatched ones; replace()
+// relinks only the faces of the new tets, matching them among themselves
+// and against the cavity's outer faces in a small hash table (a linear search over the faces cost an insertion trial
 // as much as smoothing its vertex: 10 % of handle's optimizer).
 #include "optimize/tet_topology.hpp"
 

@@ -121,19 +121,18 @@ TEST(OffsetVertices, FillThinWallsAndTheRemovalsCloseWithThem) {
 TEST(OffsetVertices, CommandLineReportsThemAndCanLeaveThemOut) {
   const std::string dir = scratch_dir("offset_vertices_cli");
   const std::string in = data_path("good/lever.stl");
-  auto on = run_partet(in + " -o " + dir + "/on.vtu -q --report " + dir + "/on.json");
-  ASSERT_EQ(on.exit_code, 0) << on.output;
-  EXPECT_EQ(run_partet("check " + dir + "/on.vtu --surface " + in).exit_code, 0);
-  auto off = run_partet(in + " -o " + dir + "/off.vtu -q --no-offset-vertices --report " + dir + "/off.json");
-  ASSERT_EQ(off.exit_code, 0) << off.output;
-  EXPECT_EQ(run_partet("check " + dir + "/off.vtu --surface " + in).exit_code, 0);
-  const auto counts = [&](const char* file) {
-    return report_step(nlohmann::json::parse(read_text(dir + "/" + file)), "initial front")["counts"];
+  // Meshes lever as `name` with `extra`, checks the mesh, and gives the
+  // initial front's counts.
+  const auto mesh = [&](const std::string& name, const std::string& extra) {
+    auto r = run_partet(in + " -o " + dir + "/" + name + ".vtu -q --report " + dir + "/" + name + ".json " + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(run_partet("check " + dir + "/" + name + ".vtu --surface " + in).exit_code, 0);
+    return report_step(nlohmann::json::parse(read_text(dir + "/" + name + ".json")), "initial front")["counts"];
   };
-  EXPECT_GT(counts("on.json")["offset vertices"].get<int>(), 10);
-  EXPECT_EQ(counts("off.json")["offset vertices"].get<int>(), 0);
-  EXPECT_EQ(counts("on.json")["gap vertices"].get<int>(),
-            counts("off.json")["gap vertices"].get<int>() + counts("on.json")["offset vertices"].get<int>());
+  const auto on = mesh("on", ""), off = mesh("off", "--no-offset-vertices");
+  EXPECT_GT(on["offset vertices"].get<int>(), 10);
+  EXPECT_EQ(off["offset vertices"].get<int>(), 0);
+  EXPECT_EQ(on["gap vertices"].get<int>(), off["gap vertices"].get<int>() + on["offset vertices"].get<int>());
 }
 
 }  // namespace
