@@ -48,6 +48,11 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_option("--too-close", o.too_close,
                  "Gap kept between the surface and the templated core, in target sizes")
       ->type_name("T")->capture_default_str();
+  app.add_option("--grading", o.grading,
+                 "How slowly the octree's sizes grow away from the surface: around an octant split finer, its "
+                 "size holds for R octants before a coarser one (1: the plain 2:1 balance, the fewest tets; "
+                 "larger: fewer size transitions, better tets, more of them), 1 to 4")
+      ->type_name("R")->capture_default_str();
   app.add_option("--min-core", o.min_core,
                  "When the templated core fills less than this share of the volume (thin or coarsely "
                  "triangulated bodies), every target size is scaled by 0.7, at most twice, until it fills "

@@ -1,11 +1,14 @@
-// 2:1 face and edge balance by required-octant closure, level by level (see
-// balance.hpp).
+// 2:1 face and edge balance, and the wider grading radii, by required-octant
+// closure, level by level (see balance.hpp).
 #include "octree/balance.hpp"
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdlib>
+#include <optional>
 
+#include "core/error.hpp"
 #include "octree/neighbours.hpp"
 
 namespace partet {
@@ -56,11 +59,53 @@ void emit_block(const uint32_t* g, uint32_t h, uint64_t mask, std::vector<uint64
 
 bool by_key(const RefineRequest& a, const RefineRequest& b) { return a.key < b.key; }
 
+// The wider blocks of grading R >= 2 around a grandparent G: the (2R + 2)^3
+// octants of level L - 1 at offsets -R..R + 1 (G's children at 0..1), as a
+// bit set; cover[p] has bit c when position p lies in child c's block.
+struct WideBlock {
+  int radius, side;
+  std::vector<uint8_t> cover;
+
+  explicit WideBlock(int r) : radius(r), side(2 * r + 2), cover(size_t(side) * side * side, 0) {
+    for (int z = 0; z < side; ++z)
+      for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+          for (int c = 0; c < 8; ++c) {
+            const int d[3] = {x - r - (c & 1), y - r - (c >> 1 & 1), z - r - (c >> 2 & 1)};
+            if (std::abs(d[0]) <= r && std::abs(d[1]) <= r && std::abs(d[2]) <= r)
+              cover[size_t(x) + size_t(side) * (size_t(y) + size_t(side) * size_t(z))] |= uint8_t(1u << c);
+          }
+  }
+
+  // Appends the anchors of the octants of the children in `children` (a
+  // bit per child) around the grandparent with anchor g whose children have
+  // edge h, skipping those outside the root cube.
+  void emit(const uint32_t* g, uint32_t h, uint8_t children, std::vector<uint64_t>& up) const {
+    size_t p = 0;
+    for (int z = 0; z < side; ++z)
+      for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x, ++p) {
+          if (!(cover[p] & children)) continue;
+          const int b[3] = {x - radius, y - radius, z - radius};
+          uint32_t a[3];
+          bool inside = true;
+          for (int i = 0; i < 3 && inside; ++i) {
+            const int64_t at = int64_t{g[i]} + int64_t{b[i]} * h;
+            inside = at >= 0 && at < int64_t{kGridSize};
+            a[i] = static_cast<uint32_t>(at);
+          }
+          if (inside) up.push_back(morton_key(a[0], a[1], a[2]));
+        }
+  }
+};
+
 }  // namespace
 
-void balance_octree(LinearOctree& tree) { refine_octree(tree, balance_requests(tree)); }
+void balance_octree(LinearOctree& tree, int grading) { refine_octree(tree, balance_requests(tree, grading)); }
 
-std::vector<RefineRequest> balance_requests(const LinearOctree& tree) {
+std::vector<RefineRequest> balance_requests(const LinearOctree& tree, int grading) {
+  PARTET_ASSERT(grading >= 1 && grading <= kMaxGrading, "grading radius out of range");
+  const std::optional<WideBlock> wide = grading > 1 ? std::optional<WideBlock>(WideBlock(grading)) : std::nullopt;
   // required[L]: anchor keys of the octants that must exist at level L.
   std::vector<std::vector<uint64_t>> required(kMaxLevel + 1);
   for (size_t i = 0; i < tree.size(); ++i) required[tree.level[i]].push_back(tree.key[i]);
@@ -84,11 +129,18 @@ std::vector<RefineRequest> balance_requests(const LinearOctree& tree) {
       while (k < here.size()) {
         const uint64_t grand = here[k] & grand_mask;
         uint64_t mask = 0;
-        for (; k < here.size() && (here[k] & grand_mask) == grand; ++k)
-          mask |= kAround[(here[k] & parent_mask) >> child_shift & 7];
+        uint8_t children = 0;
+        for (; k < here.size() && (here[k] & grand_mask) == grand; ++k) {
+          const uint64_t child = (here[k] & parent_mask) >> child_shift & 7;
+          mask |= kAround[child];
+          children |= uint8_t(1u << child);
+        }
         uint32_t g[3];
         morton_decode(grand, g[0], g[1], g[2]);
-        emit_block(g, h, mask, up);
+        if (wide)
+          wide->emit(g, h, children, up);
+        else
+          emit_block(g, h, mask, up);
       }
     }
     here.clear();
@@ -116,6 +168,30 @@ bool is_balanced(const LinearOctree& tree) {
         if (j != kNoLeaf && tree.level[j] < coarsest) return false;
       }
     }
+  }
+  return true;
+}
+
+bool is_graded(const LinearOctree& tree, int grading) {
+  if (grading <= 1) return is_balanced(tree);
+  // Each octant of a leaf's block exists when the leaf holding its centre
+  // is no coarser than it.
+  for (size_t i = 0; i < tree.size(); ++i) {
+    const int level = tree.level[i];
+    if (level < 1) continue;
+    const uint32_t h = octant_edge(level - 1);
+    uint32_t p[3];
+    morton_decode(tree.key[i] & ~(octant_key_span(level - 1) - 1), p[0], p[1], p[2]);
+    for (int dz = -grading; dz <= grading; ++dz)
+      for (int dy = -grading; dy <= grading; ++dy)
+        for (int dx = -grading; dx <= grading; ++dx) {
+          const int64_t c[3] = {int64_t{p[0]} + int64_t{dx} * h + h / 2, int64_t{p[1]} + int64_t{dy} * h + h / 2,
+                                int64_t{p[2]} + int64_t{dz} * h + h / 2};
+          if (c[0] < 0 || c[1] < 0 || c[2] < 0 || c[0] >= kGridSize || c[1] >= kGridSize || c[2] >= kGridSize)
+            continue;
+          const size_t j = tree.locate(uint32_t(c[0]), uint32_t(c[1]), uint32_t(c[2]));
+          if (tree.level[j] < level - 1) return false;
+        }
   }
   return true;
 }

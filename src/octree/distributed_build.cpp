@@ -197,8 +197,8 @@ void refine_distributed_for_triangles(DistributedOctree& tree, int rank, const S
   tree.leaves = leaves_of(view, rank);
 }
 
-void balance_distributed_octree(const Comm& comm, DistributedOctree& tree) {
-  const std::vector<RefineRequest> required = balance_requests(tree.leaves);
+void balance_distributed_octree(const Comm& comm, DistributedOctree& tree, int grading) {
+  const std::vector<RefineRequest> required = balance_requests(tree.leaves, grading);
   std::vector<int32_t> destination(required.size());
   for (size_t i = 0; i < required.size(); ++i) destination[i] = tree.ranges.owner(required[i].key);
   refine_octree(tree.leaves, migrate(comm, destination, required));

@@ -69,7 +69,7 @@ DistributedOctree build_distributed_octree(const Comm& comm, const std::vector<u
 void refine_distributed_for_triangles(DistributedOctree& tree, int rank, const SurfaceMesh& surface,
                                       const RootCube& root, const std::vector<uint8_t>& vertex_level);
 
-// Collective: balance_octree over all ranks' leaves.
-void balance_distributed_octree(const Comm& comm, DistributedOctree& tree);
+// Collective: balance_octree over all ranks' leaves (grading radius as there).
+void balance_distributed_octree(const Comm& comm, DistributedOctree& tree, int grading = 1);
 
 }  // namespace partet

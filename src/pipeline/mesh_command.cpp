@@ -163,6 +163,9 @@ void check_options(const MeshOptions& o) {
     throw InputError("--max-level must be between 1 and " + std::to_string(kMaxLevel) + " (got " +
                      std::to_string(o.max_level) + ")");
   if (!(o.too_close >= 0)) throw InputError("--too-close must be zero or positive");
+  if (o.grading < 1 || o.grading > kMaxGrading)
+    throw InputError("--grading must be between 1 and " + std::to_string(kMaxGrading) + " (got " +
+                     std::to_string(o.grading) + ")");
   if (!(o.min_core >= 0 && o.min_core <= 1)) throw InputError("--min-core must be between 0 and 1");
 }
 
@@ -180,7 +183,7 @@ ojson build_tree(MeshState& s, const MeshOptions& o) {
   size_surface(s, o);
   s.tree = build_octree(s.sizing.grid, s.sizing.level);
   refine_for_triangles(s.tree, s.surface, s.root, s.sizing.level);
-  balance_octree(s.tree);
+  balance_octree(s.tree, o.grading);
   int deepest = 0;
   for (uint8_t l : s.tree.level) deepest = std::max<int>(deepest, l);
   ojson c;
@@ -234,7 +237,7 @@ ojson build_tree_distributed(MeshState& s, const MeshOptions& o, const Comm& com
   TreeBuildCounts n_build;
   s.own = build_distributed_octree(comm, grid, level, &n_build);
   refine_distributed_for_triangles(s.own, comm.rank(), s.surface, s.root, s.sizing.level);
-  balance_distributed_octree(comm, s.own);
+  balance_distributed_octree(comm, s.own, o.grading);
   int64_t deepest = 0;
   for (uint8_t l : s.own.leaves.level) deepest = std::max<int64_t>(deepest, l);
   const int64_t leaves = static_cast<int64_t>(s.own.leaves.size());

@@ -22,6 +22,10 @@ struct MeshOptions {
   double size_factor = 1;                                     // --size-factor F
   int max_level = 20;                                         // --max-level L
   double too_close = 0.5;                                     // --too-close T
+  // --grading R: the octree's grading radius (octree/balance.hpp): around
+  // an octant split finer, its size holds for R octants before a coarser
+  // leaf; 1 is the plain 2:1 balance.
+  int grading = 2;
   // --min-core C: when the templated core fills less than this share of the
   // volume, the sizes are refined (see refine_thin_core); 0 turns it off.
   double min_core = 0.1;

@@ -27,6 +27,7 @@ ojson options_json(const MeshOptions& o) {
   j["size_factor"] = o.size_factor;
   j["max_level"] = o.max_level;
   j["too_close"] = o.too_close;
+  j["grading"] = o.grading;
   j["min_core"] = o.min_core;
   j["partitioner"] = bisection_name(o.partitioner);
   j["gap_vertices"] = o.gap_vertices;
