@@ -62,7 +62,9 @@ RestartStats restart_around_worst(TetMesh& mesh, QualityStats& quality, const Op
   OptimizeOptions band_options = options;
   band_options.passes = options.passes + kRestartExtraPasses;
   band_options.insert_vertices = false;
-  const double bar = quality_of_angle(kRestartAngle);
+  const double bar = quality_of_angle(mesh.num_tets() <= kSmallRestartTets
+                                          ? std::max(kRestartAngle, options.quality_target_deg)
+                                          : kRestartAngle);
   bool changed = false;
   for (int round = 0; round < kMaxRestarts; ++round) {
     const auto [worst, lowest] = worst_tet(mesh);

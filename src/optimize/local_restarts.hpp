@@ -22,7 +22,12 @@
 // unchanged, so the mesh's cannot drop), and the mesh's share of tets
 // under 10 degrees does not grow nor its mean radius ratio drop (computed
 // from the sums over the band before and after). A round where no layer
-// count helps ends the restarts.
+// count helps ends the restarts. On a mesh of at most kSmallRestartTets
+// tets the restarts go on while the worst tet is under the quality target
+// instead (hedra r2, 686 tets: 27.4 -> 36.5 degrees in 6 ms, where
+// Netgen reaches 35.1): a band there is much of the mesh and costs
+// milliseconds, where on fandisk r1 (517 k tets) sixteen bands cost 0.25 s
+// for the same smallest angle.
 //
 // Only the band changes; its outer faces, the boundary among them, keep
 // their vertices. Deterministic: the worst tet is the lowest tet_quality,
@@ -38,6 +43,7 @@
 namespace partet {
 
 inline constexpr double kRestartAngle = 10;
+inline constexpr size_t kSmallRestartTets = 4096;
 inline constexpr int kMaxRestarts = 16;
 inline constexpr int kRestartExtraPasses = 2;
 inline constexpr int kRestartLayers[] = {2, 1, 3};

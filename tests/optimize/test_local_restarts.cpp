@@ -2,8 +2,8 @@
 // kept only when the whole mesh gets better (a valid mesh, the same
 // boundary, a higher smallest angle, no larger share under 10 degrees, no
 // lower mean radius ratio, and the measure it keeps is the mesh's); the
-// same mesh twice; nothing tried on a mesh with no tet under 10 degrees;
-// and partet's own run (the report step "local restarts") lifts joint's
+// same mesh twice; nothing tried on a mesh with no tet under the bar (10
+// degrees, the quality target on small meshes); and partet's own run (the report step "local restarts") lifts joint's
 // smallest angle past what the optimizer left.
 #include <gtest/gtest.h>
 
@@ -77,6 +77,50 @@ TEST(LocalRestarts, NothingTriedWithoutATetUnderTheBar) {
   EXPECT_EQ(stats.tried, 0u);
   EXPECT_EQ(mesh.tets, original.tets);
   EXPECT_EQ(mesh.xyz, original.xyz);
+}
+
+// Data surface `name` meshed and optimized as partet does but for the
+// restarts (the optimizer run here on the unoptimized mesh).
+TetMesh optimized(const std::string& name) {
+  TetMesh mesh = unoptimized(name);
+  optimize_mesh(mesh, OptimizeOptions{});
+  return mesh;
+}
+
+TEST(LocalRestarts, SmallMeshesGoOnUnderTheQualityTarget) {
+  // The ellipsoid's 2,625 tets, optimized: no tet under 10 degrees, but
+  // under the 40 of the quality target, and a band lifts the worst.
+  const TetMesh mesh = optimized("ellipsoid");
+  ASSERT_LE(mesh.num_tets(), kSmallRestartTets);
+  const QualityStats before = measure_quality(mesh);
+  ASSERT_GT(before.min_dihedral_deg, kRestartAngle);
+  ASSERT_LT(before.min_dihedral_deg, OptimizeOptions{}.quality_target_deg);
+  TetMesh restarted = mesh;
+  QualityStats quality = before;
+  const RestartStats stats = restart_around_worst(restarted, quality, OptimizeOptions{});
+  EXPECT_GT(stats.kept, 0u);
+  EXPECT_GT(quality.min_dihedral_deg, before.min_dihedral_deg);
+  EXPECT_GE(quality.radius_ratio_mean, before.radius_ratio_mean);
+  const SurfaceMesh surface = read_surface_file(test::data_path("good/ellipsoid.off"));
+  EXPECT_TRUE(validate_mesh(restarted, &surface).valid);
+  // With the target at 10 degrees the bar is 10: nothing to restart.
+  OptimizeOptions low;
+  low.quality_target_deg = 10;
+  TetMesh unchanged = mesh;
+  QualityStats q = before;
+  EXPECT_EQ(restart_around_worst(unchanged, q, low).tried, 0u);
+  EXPECT_EQ(unchanged.tets, mesh.tets);
+}
+
+TEST(LocalRestarts, LargerMeshesRestartOnlyUnderTenDegrees) {
+  // sphere966's 12,621 tets, optimized: worst tet near 20 degrees.
+  TetMesh mesh = optimized("sphere966");
+  ASSERT_GT(mesh.num_tets(), kSmallRestartTets);
+  QualityStats quality = measure_quality(mesh);
+  ASSERT_GT(quality.min_dihedral_deg, kRestartAngle);
+  const TetMesh original = mesh;
+  EXPECT_EQ(restart_around_worst(mesh, quality, OptimizeOptions{}).tried, 0u);
+  EXPECT_EQ(mesh.tets, original.tets);
 }
 
 TEST(LocalRestarts, TheRunLiftsJointsSmallestAngle) {
