@@ -70,11 +70,19 @@ TetMesh distribute_mesh(const Comm& comm, const TetMesh& whole) {
       for (uint32_t i = 0; i < parts[p].whole.size(); ++i) local[p][parts[p].whole[i]] = i;
       parts[p].mesh.global_ids.assign(parts[p].whole.begin(), parts[p].whole.end());
     }
+    // Only faces whose three vertices are on the surface are looked up.
+    std::vector<uint8_t> on_surface(whole.num_vertices(), 0);
+    for (uint32_t v : whole.tris) on_surface[v] = 1;
     for (size_t t = 0; t < whole.num_tets() && !triangle.empty(); ++t)
       for (int skip = 0; skip < 4; ++skip) {
         std::array<uint32_t, 3> f;
+        bool surface = true;
         for (int i = 0, k = 0; i < 4; ++i)
-          if (i != skip) f[static_cast<size_t>(k++)] = whole.tets[4 * t + static_cast<size_t>(i)];
+          if (i != skip) {
+            f[static_cast<size_t>(k++)] = whole.tets[4 * t + static_cast<size_t>(i)];
+            surface = surface && on_surface[f[static_cast<size_t>(k - 1)]];
+          }
+        if (!surface) continue;
         std::sort(f.begin(), f.end());
         const auto it = triangle.find(f);
         if (it == triangle.end()) continue;
