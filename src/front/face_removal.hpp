@@ -106,9 +106,9 @@ struct RemovalOptions {
   // Tree-less removals only: try TreelessStrategy::kShortGrowth before the
   // default strategy (treeless_removal.hpp, "Short growth first").
   bool short_growth_first = true;
-  // Tree-less removals only: when short growth stalls with at most this
-  // many faces left, the default strategy goes on from there before the
-  // attempts start over (treeless_removal.hpp, "Short growth first").
+  // Tree-less removals only: when a strategy stalls with at most this many
+  // faces left, the next one goes on from there before the attempts start
+  // over (treeless_removal.hpp, "Short growth first").
   size_t go_on_faces = 64;
   // Tree-less removals only: the rescue strategies alone, for a state from
   // which short growth and the default already failed.

@@ -73,19 +73,22 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
     return n;
   }
   const TreelessState start{front, tree.cls, out, m};
+  // Each attempt runs from the call's start: one strategy, then, while it
+  // stalls with at most options.go_on_faces faces, the next strategies
+  // going on from where the last one stopped. chains[a] is how attempt a's
+  // front was reached; faces_left[a] what it left.
   std::vector<size_t> faces_left;
+  std::vector<std::vector<TreelessStrategy>> chains;
   TreelessCounts n;
-  for (const TreelessStrategy strategy : strategies) {
+  for (size_t first = 0; first < strategies.size(); ++first) {
     if (!faces_left.empty()) start.restore(front, tree, out, m);
-    n = run_treeless_rounds(front, tree, root, out, options, m, strategy);
-    faces_left.push_back(n.faces_left);
-    n.faces_left_by_attempt = faces_left;
-    if (n.faces_left == 0) return n;
-    // Short growth stalled with a few stuck cavities: the default goes on
-    // from there before the attempts start over.
-    if (strategy == TreelessStrategy::kShortGrowth && n.faces_left <= options.go_on_faces) {
-      n = run_treeless_rounds(front, tree, root, out, options, m, TreelessStrategy::kDefault);
+    std::vector<TreelessStrategy> chain;
+    for (size_t k = first; k < strategies.size(); ++k) {
+      if (k > first && n.faces_left > options.go_on_faces) break;
+      n = run_treeless_rounds(front, tree, root, out, options, m, strategies[k]);
+      chain.push_back(strategies[k]);
       faces_left.push_back(n.faces_left);
+      chains.push_back(chain);
       n.faces_left_by_attempt = faces_left;
       if (n.faces_left == 0) return n;
     }
@@ -96,9 +99,10 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   // one more whole mesh at the peak: blobby r4 2,119 -> 2,699 MB).
   const auto fewest = std::min_element(faces_left.begin(), faces_left.end());
   const size_t best = static_cast<size_t>(fewest - faces_left.begin());
-  if (options.rerun_best && best + 1 < strategies.size()) {
+  if (options.rerun_best && best + 1 < faces_left.size()) {
     start.restore(front, tree, out, m);
-    n = run_treeless_rounds(front, tree, root, out, options, m, strategies[best]);
+    for (const TreelessStrategy strategy : chains[best])
+      n = run_treeless_rounds(front, tree, root, out, options, m, strategy);
     PARTET_ASSERT(n.faces_left == *fewest, "a tree-less attempt run again left other faces");
     n.faces_left_by_attempt = faces_left;
   }

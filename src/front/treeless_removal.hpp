@@ -80,7 +80,11 @@
 // the one the default makes alone. But where it stalls with at most
 // options.go_on_faces (64) faces left, a few stuck cavities, the default
 // first goes on from there, and the restart comes only when that fails
-// too: the offset gap vertices (offset_vertices.hpp) left t13_data r3's
+// too; so does every strategy: one that stalls with at most that many
+// faces hands its front to the next in the list (femur r3 with the graded
+// tree: short growth left 24 faces, the default going on 4, then the
+// restart with the rescues took 45.7 s where undo overgrowth and cone
+// first going on close it in 38.3; part r3 9.5 -> 5.9 s); the offset gap vertices (offset_vertices.hpp) left t13_data r3's
 // short growth with 10 faces, and the default from the start then
 // stalled, as did two rescues (172 s; going on: 15 s); femur r3 41 -> 32
 // s. (Going on whatever the faces left closed joint r3 sooner, 36.7 ->
@@ -111,8 +115,9 @@
 //    deleted: rotor r3).
 // The starting state is copied before the first attempt runs. The first
 // strategy that closes the front wins. When none does, the attempt that
-// left the fewest faces (the earliest on ties) is run again from the
-// starting state, unless it was the last (the rounds are deterministic;
+// left the fewest faces (the earliest on ties; an attempt that went on is
+// its whole chain of strategies) is run again from the starting state,
+// unless it was the last (the rounds are deterministic;
 // keeping a copy of the best attempt instead held one more whole mesh at
 // the peak). Inputs the default closes are unchanged: the rescues never
 // run.
@@ -177,7 +182,7 @@ struct TreelessCounts {
   size_t foreign_faces = 0;    // of those, skipped for a leaf owned elsewhere (last tree run)
   bool stalled = false;        // ended by stall_rounds rounds without a smaller front
   TreelessStrategy strategy = TreelessStrategy::kDefault;  // of the attempt these counts are from
-  std::vector<size_t> faces_left_by_attempt;  // per strategy tried, in order
+  std::vector<size_t> faces_left_by_attempt;  // per strategy run (from the start or going on), in order
 };
 
 // Same contract as remove_faces_tree_supported on `front`, `tree`, `root`

@@ -4,7 +4,8 @@
 // a valid mesh; new vertices carry ids in their own space; two runs give
 // the same mesh; the short-growth attempt closes a CAD part in fewer rounds
 // than the default; when those leave faces, a rescue strategy closes them
-// or the best attempt is kept. Also the pieces: the deepest
+// (starting over, or going on from a few stuck faces) or the best attempt
+// is kept. Also the pieces: the deepest
 // kernel point of a front, the reopening of a tet (Front::remove_tet) and
 // the tet behind a face.
 #include <gtest/gtest.h>
@@ -187,6 +188,34 @@ TEST(FrontTreeless, RescuesStartAgainAndTheBestAttemptIsKept) {
   const Meshed undone = mesh_surface(dragknob, "good/dragknob.off r2, stall 1, undo overgrowth", impatient);
   EXPECT_EQ(undone.faces_left, 0u);
   EXPECT_EQ(undone.counts.strategy, TreelessStrategy::kUndoOvergrowth);
+}
+
+// Going on: with every stall counted as a few stuck faces, each attempt
+// runs the strategies after its first from where the last one stopped (the
+// default, then the three rescues: 4 runs; then from the start the rescues
+// with those after them: 3, 2, 1), none closes joint r2 at stall_rounds 1,
+// and the attempt that left the fewest faces, a chain, is run again from
+// the start, chain and all, to the same front.
+// Going on past the default: joint r2 at stall_rounds 1 without short
+// growth. Starting over, no strategy closes it (4 attempts, above); when
+// the default's stall counts as a few stuck faces, the next strategy
+// (undo overgrowth) goes on from the default's front and closes it.
+TEST(FrontTreeless, AttemptsGoOnThroughTheLaterStrategies) {
+  const SurfaceMesh joint = refine_midpoints(refine_midpoints(read_surface_file(data_path("good/joint.off"))));
+  RemovalOptions over;
+  over.stall_rounds = 1;
+  over.short_growth_first = false;
+  over.go_on_faces = 0;
+  const Meshed restarted = mesh_surface(joint, "good/joint.off r2, stall 1, starting over", over);
+  RemovalOptions on = over;
+  on.go_on_faces = SIZE_MAX;
+  const Meshed went_on = mesh_surface(joint, "good/joint.off r2, stall 1, going on", on);
+  ASSERT_EQ(restarted.counts.faces_left_by_attempt.size(), 4u);
+  EXPECT_GT(restarted.faces_left, 0u);
+  ASSERT_EQ(went_on.counts.faces_left_by_attempt.size(), 2u);
+  EXPECT_EQ(went_on.counts.faces_left_by_attempt[0], restarted.counts.faces_left_by_attempt[0]);
+  EXPECT_EQ(went_on.faces_left, 0u);
+  EXPECT_EQ(went_on.counts.strategy, TreelessStrategy::kUndoOvergrowth);
 }
 
 // spool refined once: the short-growth attempt closes it (its fills split
