@@ -84,10 +84,10 @@
 // faces hands its front to the next in the list (femur r3 with the graded
 // tree: short growth left 24 faces, the default going on 4, then the
 // restart with the rescues took 45.7 s where undo overgrowth and cone
-// first going on close it in 38.3; part r3 9.5 -> 5.9 s); the offset gap vertices (offset_vertices.hpp) left t13_data r3's
-// short growth with 10 faces, and the default from the start then
-// stalled, as did two rescues (172 s; going on: 15 s); femur r3 41 -> 32
-// s. (Going on whatever the faces left closed joint r3 sooner, 36.7 ->
+// first going on close it in 39.6; part r3 9.5 -> 5.4 s). The offset gap
+// vertices (offset_vertices.hpp) left t13_data r3's short growth with 10
+// faces, and the default from the start then stalled, as did two rescues
+// (172 s; going on: 15 s); femur r3 41 -> 32 s. (Going on whatever the faces left closed joint r3 sooner, 36.7 ->
 // 25.8 s, when its short growth stalled with 16 faces, but into a mesh
 // whose flat sheet the optimizer could not lift then: 3e-10 degrees
 // instead of 1.0.)

@@ -128,19 +128,19 @@ std::vector<RefineRequest> balance_requests(const LinearOctree& tree, int gradin
       size_t k = 0;
       while (k < here.size()) {
         const uint64_t grand = here[k] & grand_mask;
-        uint64_t mask = 0;
-        uint8_t children = 0;
-        for (; k < here.size() && (here[k] & grand_mask) == grand; ++k) {
-          const uint64_t child = (here[k] & parent_mask) >> child_shift & 7;
-          mask |= kAround[child];
-          children |= uint8_t(1u << child);
-        }
+        uint8_t children = 0;  // a bit per child of the grandparent in `here`
+        for (; k < here.size() && (here[k] & grand_mask) == grand; ++k)
+          children |= uint8_t(1u << ((here[k] & parent_mask) >> child_shift & 7));
         uint32_t g[3];
         morton_decode(grand, g[0], g[1], g[2]);
-        if (wide)
+        if (wide) {
           wide->emit(g, h, children, up);
-        else
+        } else {
+          uint64_t mask = 0;
+          for (int c = 0; c < 8; ++c)
+            if (children >> c & 1) mask |= kAround[c];
           emit_block(g, h, mask, up);
+        }
       }
     }
     here.clear();

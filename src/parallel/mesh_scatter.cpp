@@ -76,13 +76,9 @@ TetMesh distribute_mesh(const Comm& comm, const TetMesh& whole) {
     for (size_t t = 0; t < whole.num_tets() && !triangle.empty(); ++t)
       for (int skip = 0; skip < 4; ++skip) {
         std::array<uint32_t, 3> f;
-        bool surface = true;
         for (int i = 0, k = 0; i < 4; ++i)
-          if (i != skip) {
-            f[static_cast<size_t>(k++)] = whole.tets[4 * t + static_cast<size_t>(i)];
-            surface = surface && on_surface[f[static_cast<size_t>(k - 1)]];
-          }
-        if (!surface) continue;
+          if (i != skip) f[static_cast<size_t>(k++)] = whole.tets[4 * t + static_cast<size_t>(i)];
+        if (!on_surface[f[0]] || !on_surface[f[1]] || !on_surface[f[2]]) continue;
         std::sort(f.begin(), f.end());
         const auto it = triangle.find(f);
         if (it == triangle.end()) continue;
