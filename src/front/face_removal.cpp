@@ -150,9 +150,13 @@ class Remover {
   std::vector<QueuedFace> batch_;  // faces to load into the queue as one run
   std::vector<uint8_t> foreign_;     // per face slot: skipped for a foreign leaf
   double box_lo_[3] = {0, 0, 0}, box_hi_[3] = {0, 0, 0};
+  // This rank owns every leaf: no neighbourhood is foreign, and it needs
+  // only the leaves the front has been listed in (Front::listed_leaves).
+  bool owns_every_leaf_ = false;
   std::vector<size_t> leaves_;      // over the neighbourhood box: where targets come from
   std::vector<uint32_t> leaf_cells_;  // their grid cells, lo then hi (6 per leaf)
   std::vector<size_t> tet_leaves_;  // over one candidate tet's box: what its checks need
+  std::vector<uint32_t> tet_cells_;  // their grid cells when they cover it (make_tet)
   NearFront near_;
   Suspects suspects_;  // what blocked this face's targets so far: tested first
   const NearFront no_front_;  // to test the suspects alone
@@ -168,7 +172,10 @@ void Remover::neighbourhood(uint32_t f) {
   removal_neighbourhood(front_, root_, f, options_, box_lo_, box_hi_);
   uint32_t glo[3], ghi[3];
   grid_range(root_, box_lo_, box_hi_, glo, ghi);
-  front_.query().leaves_in_range(glo, ghi, leaves_);
+  if (owns_every_leaf_)
+    front_.query().leaves_in_range(glo, ghi, leaves_, front_.listed_leaves());
+  else
+    front_.query().leaves_in_range(glo, ghi, leaves_);
   leaf_cells_.resize(6 * leaves_.size());
   for (size_t i = 0; i < leaves_.size(); ++i)
     front_.query().leaf_cells(leaves_[i], &leaf_cells_[6 * i], &leaf_cells_[6 * i + 3]);
@@ -187,8 +194,24 @@ bool Remover::neighbourhood_foreign() const {
 }
 
 void Remover::make_tet(uint32_t f, uint32_t p) {
-  // Targets lie in the neighbourhood box, and so does the tet's box.
-  const LeafCover cover{leaves_, leaf_cells_};
+  // Targets lie in the neighbourhood box, and so does the tet's box. Its
+  // new faces need every leaf there, not only the listed ones: with the
+  // listed leaves alone, the leaves over the tet's box are the cover.
+  if (owns_every_leaf_) {
+    const uint32_t* t = front_.face(f);
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min({front_.point(t[0])[k], front_.point(t[1])[k], front_.point(t[2])[k], front_.point(p)[k]});
+      hi[k] = std::max({front_.point(t[0])[k], front_.point(t[1])[k], front_.point(t[2])[k], front_.point(p)[k]});
+    }
+    uint32_t glo[3], ghi[3];
+    grid_range(root_, lo, hi, glo, ghi);
+    front_.query().leaves_in_range(glo, ghi, tet_leaves_);
+    tet_cells_.resize(6 * tet_leaves_.size());
+    for (size_t i = 0; i < tet_leaves_.size(); ++i)
+      front_.query().leaf_cells(tet_leaves_[i], &tet_cells_[6 * i], &tet_cells_[6 * i + 3]);
+  }
+  const LeafCover cover = owns_every_leaf_ ? LeafCover{tet_leaves_, tet_cells_} : LeafCover{leaves_, leaf_cells_};
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_, &cover);
   ++counts_.tets;
   for (uint32_t g : added_) queue_.push(entry(g));
@@ -362,6 +385,7 @@ RemovalCounts Remover::run(const std::vector<uint32_t>* seeds) {
   const size_t have = out_.num_vertices();
   PARTET_ASSERT(have <= front_.num_vertices(), "output mesh has more vertices than the front");
   const bool ids = out_.global_ids.size() == have;
+  owns_every_leaf_ = std::all_of(tree_.owner.begin(), tree_.owner.end(), [&](int32_t o) { return o == options_.rank; });
   out_.xyz.insert(out_.xyz.end(), front_.xyz().begin() + 3 * have, front_.xyz().end());
   if (ids) out_.global_ids.insert(out_.global_ids.end(), front_.global_ids().begin() + have, front_.global_ids().end());
 
@@ -464,7 +488,12 @@ std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root
   for (uint32_t f : memo.recorded) {
     const uint32_t failed_at = memo.failed_at(f, full);
     if (!front.alive(f) || failed_at == kNeverFailed) continue;
-    removal_neighbourhood_leaves(front, root, f, options, leaves);
+    // Only a listed leaf has been stamped.
+    double lo[3], hi[3];
+    removal_neighbourhood(front, root, f, options, lo, hi);
+    uint32_t glo[3], ghi[3];
+    grid_range(root, lo, hi, glo, ghi);
+    front.query().leaves_in_range(glo, ghi, leaves, front.listed_leaves());
     if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at; }))
       faces.push_back(f);
   }

@@ -45,6 +45,7 @@ Front::Front(const InitialFront& initial, const LinearOctree& tree, const RootCu
       vertex_prev_(initial.vertex_leaf.size(), kNoIndex),
       vertex_next_(initial.vertex_leaf.size(), kNoIndex),
       leaf_vertex_head_(tree.size(), kNoIndex),
+      listed_(tree.size()),
       leaf_entry_head_(tree.size(), kNoIndex),
       leaf_changed_(tree.size(), 0) {
   PARTET_ASSERT(initial.xyz.size() == 3 * initial.vertex_leaf.size(), "initial front vertex arrays disagree");
@@ -109,6 +110,7 @@ void Front::use_vertex(uint32_t v) {
   vertex_next_[v] = leaf_vertex_head_[leaf];
   if (vertex_next_[v] != kNoIndex) vertex_prev_[vertex_next_[v]] = v;
   leaf_vertex_head_[leaf] = v;
+  listed_.insert(leaf);
   leaf_changed_[leaf] = changes_;
 }
 
@@ -193,6 +195,7 @@ void Front::list_face(uint32_t f, bool stamp, const LeafCover* cover) {
     entry_next_[e] = leaf_entry_head_[leaf];
     if (entry_next_[e] != kNoIndex) entry_prev_[entry_next_[e]] = e;
     leaf_entry_head_[leaf] = e;
+    listed_.insert(leaf);
     entry_chain_[e] = face_first_entry_[f];
     face_first_entry_[f] = e;
     if (stamp) leaf_changed_[leaf] = changes_;

@@ -36,6 +36,11 @@
 //    arrays (face entries come from a pool with a free list).
 // Every change stamps the leaves whose lists changed with a change counter,
 // so callers can tell whether the front near a place changed since a time.
+// The leaves whose lists ever held a face or a vertex form a growing set
+// (listed_leaves): every stamped leaf is one, and a range query restricted
+// to it finds every face, vertex and stamp in range (after the Delaunay
+// fill the front is near a few of the leaves, and a long face's
+// neighbourhood spans hundreds).
 #pragma once
 
 #include <array>
@@ -149,6 +154,8 @@ class Front {
   bool leaf_front_empty(size_t leaf) const {
     return leaf_entry_head_[leaf] == kNoIndex && leaf_vertex_head_[leaf] == kNoIndex;
   }
+  // The leaves whose lists ever held a face or a vertex (see above).
+  const LeafSet& listed_leaves() const { return listed_; }
   // Value of the change counter when the leaf's lists last changed (0: never).
   uint64_t leaf_changed(size_t leaf) const { return leaf_changed_[leaf]; }
   // Number of tets applied so far (the change counter).
@@ -249,6 +256,7 @@ class Front {
   std::vector<uint32_t> vertex_prev_;  // in the leaf's vertex list
   std::vector<uint32_t> vertex_next_;
   std::vector<uint32_t> leaf_vertex_head_;
+  LeafSet listed_;
 
   std::vector<uint32_t> faces_;
   std::vector<uint8_t> alive_;

@@ -235,6 +235,10 @@ bool TreelessRemover::own_leaves_around(const double* const* points, int n) {
   }
   uint32_t glo[3], ghi[3];
   grid_range(root_, lo, hi, glo, ghi);
+  if (!shared_) {  // every leaf is this rank's: the front's are enough
+    front_.query().leaves_in_range(glo, ghi, leaves_, front_.listed_leaves());
+    return true;
+  }
   front_.query().leaves_in_range(glo, ghi, leaves_);
   for (size_t leaf : leaves_)
     if (tree_.owner[leaf] != options_.rank) return false;

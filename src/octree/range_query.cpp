@@ -26,6 +26,16 @@ bool inside(const uint32_t* a, uint32_t h, const uint32_t* lo, const uint32_t* h
 // Runs of at most this many leaves are scanned rather than descended.
 constexpr size_t kScanRun = 64;
 
+// Every leaf, with a LeafSet's interface.
+struct EveryLeaf {
+  static bool any(size_t b, size_t e) { return b < e; }
+  static bool contains(size_t) { return true; }
+  template <class Visit>
+  static void for_each(size_t b, size_t e, Visit&& visit) {
+    for (size_t i = b; i < e; ++i) visit(i);
+  }
+};
+
 }  // namespace
 
 void grid_range(const RootCube& root, const double* blo, const double* bhi, uint32_t* lo, uint32_t* hi) {
@@ -90,17 +100,20 @@ size_t LeafRangeQuery::locate_near(size_t hint, uint32_t x, uint32_t y, uint32_t
                                               first + static_cast<std::ptrdiff_t>(hi), key) - first) - 1;
 }
 
+template <class Only>
 void LeafRangeQuery::descend(uint64_t key, const uint32_t* a, int level, size_t b, size_t e, const uint32_t* lo,
-                             const uint32_t* hi, std::vector<size_t>& out) const {
+                             const uint32_t* hi, std::vector<size_t>& out, const Only& only) const {
   // The octant (key, anchor a, level) overlaps the query, is a leaf or
   // split, and its leaves are [b, e).
+  if (!only.any(b, e)) return;
   if (e - b == 1 || inside(a, octant_edge(level), lo, hi)) {
-    for (size_t i = b; i < e; ++i) out.push_back(i);
+    only.for_each(b, e, [&](size_t i) { out.push_back(i); });
     return;
   }
   if (e - b <= kScanRun) {
-    for (size_t i = b; i < e; ++i)
+    only.for_each(b, e, [&](size_t i) {
       if (overlaps(&anchor_[3 * i], octant_edge(tree_->level[i]), lo, hi)) out.push_back(i);
+    });
     return;
   }
   const uint64_t span = octant_key_span(level + 1);
@@ -113,12 +126,23 @@ void LeafRangeQuery::descend(uint64_t key, const uint32_t* a, int level, size_t 
     const uint64_t ck = key + c * span;
     cb = static_cast<size_t>(std::lower_bound(first + cb, first + e, ck) - first);
     const size_t ce = static_cast<size_t>(std::lower_bound(first + cb, first + e, ck + span) - first);
-    descend(ck, ca, level + 1, cb, ce, lo, hi, out);
+    descend(ck, ca, level + 1, cb, ce, lo, hi, out, only);
     cb = ce;
   }
 }
 
 void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out) const {
+  collect(lo, hi, out, EveryLeaf{});
+}
+
+void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out,
+                                     const LeafSet& only) const {
+  collect(lo, hi, out, only);
+}
+
+template <class Only>
+void LeafRangeQuery::collect(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out,
+                             const Only& only) const {
   out.clear();
   const uint32_t extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1;
   const int level = kMaxLevel - static_cast<int>(std::bit_width(extent - 1));
@@ -133,12 +157,14 @@ void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std
     for (int j = k; j > 0 && keys[j - 1] > keys[j]; --j) std::swap(keys[j - 1], keys[j]);
   const size_t n = tree_->size();
   size_t next = n;  // the leaf after the previous octant's run
+  size_t last = n;  // the last leaf found inside one octant
   for (int k = 0; k < count; ++k) {
     // The leaf containing the octant's anchor: often the one right after
     // the previous octant's run (consecutive in Morton order).
     const size_t b = next < n && tree_->key[next] == keys[k] ? next : upper_bound(keys[k]) - 1;
     if (tree_->level[b] <= level) {  // the octant lies inside leaf b
-      if (out.empty() || out.back() != b) out.push_back(b);
+      if (last != b && only.contains(b)) out.push_back(b);
+      last = b;
       next = b + 1;
       continue;
     }
@@ -151,10 +177,11 @@ void LeafRangeQuery::leaves_in_range(const uint32_t* lo, const uint32_t* hi, std
       e = upper_bound(end_key - 1);
       uint32_t a[3];
       morton_decode(keys[k], a[0], a[1], a[2]);
-      descend(keys[k], a, level, b, e, lo, hi, out);
+      descend(keys[k], a, level, b, e, lo, hi, out, only);
     } else {
-      for (size_t i = b; i < e; ++i)
+      only.for_each(b, e, [&](size_t i) {
         if (overlaps(&anchor_[3 * i], octant_edge(tree_->level[i]), lo, hi)) out.push_back(i);
+      });
     }
     next = e;
   }

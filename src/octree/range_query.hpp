@@ -8,13 +8,16 @@
 // by child with binary searches inside the parent's run (short runs are
 // scanned). Locating a key uses a table over the octants of one level (about
 // as many as there are leaves): the first leaf at or after each of them, so
-// a search only bisects the few leaves of one table cell.
+// a search only bisects the few leaves of one table cell. Restricted to a
+// LeafSet, a run with no member is skipped whole and a short run's members
+// are listed from the set's bits.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "octree/leaf_set.hpp"
 #include "octree/octree.hpp"
 
 namespace partet {
@@ -40,6 +43,9 @@ class LeafRangeQuery {
   // Replaces `out` with the indices, ascending, of the leaves that contain
   // at least one grid cell of [lo, hi] (inclusive ranges).
   void leaves_in_range(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out) const;
+  // The same restricted to the members of `only` (same order): on a front
+  // that has been near few of the leaves, a fraction of the work.
+  void leaves_in_range(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out, const LeafSet& only) const;
 
   // Index of the leaf containing grid point (x, y, z), as
   // LinearOctree::locate.
@@ -67,8 +73,12 @@ class LeafRangeQuery {
   // First leaf whose key is above `key` (the leaf containing it is the one
   // before).
   size_t upper_bound(uint64_t key) const;
+  // The leaves of `only` (every leaf, or a LeafSet) in range.
+  template <class Only>
+  void collect(const uint32_t* lo, const uint32_t* hi, std::vector<size_t>& out, const Only& only) const;
+  template <class Only>
   void descend(uint64_t key, const uint32_t* a, int level, size_t b, size_t e, const uint32_t* lo,
-               const uint32_t* hi, std::vector<size_t>& out) const;
+               const uint32_t* hi, std::vector<size_t>& out, const Only& only) const;
 
   const LinearOctree* tree_;  // a pointer: the query is assignable
   std::vector<uint32_t> anchor_;  // 3 grid coordinates per leaf
