@@ -2,6 +2,7 @@
 // grid units, brute-force adjacency, and surfaces assembled from boxes.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -110,6 +111,20 @@ inline SurfaceMesh placed_box(double x, double y, double z, double size, int n =
   }
   for (uint32_t v : s.tris) merged.tris.push_back(remap[v]);
   return merged;
+}
+
+// A random box of grid cells [lo, hi] (inclusive) for range queries: from
+// a few cells to most of the root; with `aligned`, its low corner on the
+// lattice of level-4 octants (boxes starting at octant boundaries).
+inline void random_grid_box(std::mt19937& rng, bool aligned, uint32_t* lo, uint32_t* hi) {
+  const int scale = std::uniform_int_distribution<int>(0, 20)(rng);
+  std::uniform_int_distribution<uint32_t> coord(0, kGridSize - 1);
+  std::uniform_int_distribution<uint32_t> extent(0, (1u << scale) - 1);
+  for (int i = 0; i < 3; ++i) {
+    lo[i] = coord(rng);
+    if (aligned) lo[i] &= ~(octant_edge(4) - 1);
+    hi[i] = std::min<uint32_t>(kGridSize - 1, lo[i] + extent(rng));
+  }
 }
 
 }  // namespace partet::test

@@ -69,14 +69,8 @@ TEST(LeafSet, RestrictedRangeQueryKeepsTheMembersInOrder) {
         if (member[i]) set.insert(i);
       std::vector<size_t> all, got;
       for (int k = 0; k < 200; ++k) {
-        const int scale = std::uniform_int_distribution<int>(0, 20)(rng);
-        std::uniform_int_distribution<uint32_t> coord(0, kGridSize - 1);
-        std::uniform_int_distribution<uint32_t> extent(0, (1u << scale) - 1);
         uint32_t lo[3], hi[3];
-        for (int i = 0; i < 3; ++i) {
-          lo[i] = coord(rng);
-          hi[i] = std::min<uint32_t>(kGridSize - 1, lo[i] + extent(rng));
-        }
+        test::random_grid_box(rng, k % 3 == 0, lo, hi);
         q.leaves_in_range(lo, hi, all);
         q.leaves_in_range(lo, hi, got, set);
         std::vector<size_t> want;

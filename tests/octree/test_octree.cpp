@@ -128,16 +128,8 @@ TEST(OctreeRangeQuery, MatchesBruteForce) {
     std::mt19937 rng(seed);
     std::vector<size_t> got;
     for (int k = 0; k < 300; ++k) {
-      // Boxes from a few cells to most of the root, near lattice boundaries.
-      const int scale = std::uniform_int_distribution<int>(0, 20)(rng);
-      std::uniform_int_distribution<uint32_t> coord(0, kGridSize - 1);
-      std::uniform_int_distribution<uint32_t> extent(0, (1u << scale) - 1);
       uint32_t lo[3], hi[3];
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = coord(rng);
-        if (k % 3 == 0) lo[i] &= ~(octant_edge(4) - 1);
-        hi[i] = std::min<uint32_t>(kGridSize - 1, lo[i] + extent(rng));
-      }
+      test::random_grid_box(rng, k % 3 == 0, lo, hi);
       q.leaves_in_range(lo, hi, got);
       std::vector<size_t> want;
       for (size_t i = 0; i < t.size(); ++i) {
