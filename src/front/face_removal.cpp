@@ -473,12 +473,15 @@ void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f,
 }
 
 void removal_neighbourhood_leaves(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
-                                  std::vector<size_t>& leaves) {
+                                  std::vector<size_t>& leaves, bool listed_only) {
   double lo[3], hi[3];
   removal_neighbourhood(front, root, f, options, lo, hi);
   uint32_t glo[3], ghi[3];
   grid_range(root, lo, hi, glo, ghi);
-  front.query().leaves_in_range(glo, ghi, leaves);
+  if (listed_only)
+    front.query().leaves_in_range(glo, ghi, leaves, front.listed_leaves());
+  else
+    front.query().leaves_in_range(glo, ghi, leaves);
 }
 
 std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root, const RemovalOptions& options,
@@ -489,11 +492,7 @@ std::vector<uint32_t> standing_failures(const Front& front, const RootCube& root
     const uint32_t failed_at = memo.failed_at(f, full);
     if (!front.alive(f) || failed_at == kNeverFailed) continue;
     // Only a listed leaf has been stamped.
-    double lo[3], hi[3];
-    removal_neighbourhood(front, root, f, options, lo, hi);
-    uint32_t glo[3], ghi[3];
-    grid_range(root, lo, hi, glo, ghi);
-    front.query().leaves_in_range(glo, ghi, leaves, front.listed_leaves());
+    removal_neighbourhood_leaves(front, root, f, options, leaves, true);
     if (std::none_of(leaves.begin(), leaves.end(), [&](size_t leaf) { return front.leaf_changed(leaf) > failed_at; }))
       faces.push_back(f);
   }

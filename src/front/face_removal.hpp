@@ -191,9 +191,11 @@ struct RemovalCounts {
 void removal_neighbourhood(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
                            double* lo, double* hi);
 // The leaves over that box (replacing `leaves`): those a removal on f reads
-// and writes, and whose owners decide whether a rank may make it.
+// and writes, and whose owners decide whether a rank may make it; with
+// `listed_only`, only those of Front::listed_leaves (enough for the faces,
+// vertices and change stamps there, not for the owners).
 void removal_neighbourhood_leaves(const Front& front, const RootCube& root, uint32_t f, const RemovalOptions& options,
-                                  std::vector<size_t>& leaves);
+                                  std::vector<size_t>& leaves, bool listed_only = false);
 
 // The alive faces whose latest failure `memo` holds (in a full pass with
 // `full`, else in a capped one) still stands: none of their neighbourhood
