@@ -121,6 +121,8 @@ class Remover {
   // them; true when a tet was made.
   bool try_face(uint32_t f, bool full);
   void neighbourhood(uint32_t f);
+  // The grid cells of `leaves` (6 each, LeafCover::cells).
+  void cells_of(const std::vector<size_t>& leaves, std::vector<uint32_t>& cells) const;
   bool neighbourhood_changed_since(uint64_t stamp) const;
   bool neighbourhood_foreign() const;
   // True when face f's last failure (this call's or an earlier one's, see
@@ -176,9 +178,12 @@ void Remover::neighbourhood(uint32_t f) {
     front_.query().leaves_in_range(glo, ghi, leaves_, front_.listed_leaves());
   else
     front_.query().leaves_in_range(glo, ghi, leaves_);
-  leaf_cells_.resize(6 * leaves_.size());
-  for (size_t i = 0; i < leaves_.size(); ++i)
-    front_.query().leaf_cells(leaves_[i], &leaf_cells_[6 * i], &leaf_cells_[6 * i + 3]);
+  cells_of(leaves_, leaf_cells_);
+}
+
+void Remover::cells_of(const std::vector<size_t>& leaves, std::vector<uint32_t>& cells) const {
+  cells.resize(6 * leaves.size());
+  for (size_t i = 0; i < leaves.size(); ++i) front_.query().leaf_cells(leaves[i], &cells[6 * i], &cells[6 * i + 3]);
 }
 
 bool Remover::neighbourhood_changed_since(uint64_t stamp) const {
@@ -207,9 +212,7 @@ void Remover::make_tet(uint32_t f, uint32_t p) {
     uint32_t glo[3], ghi[3];
     grid_range(root_, lo, hi, glo, ghi);
     front_.query().leaves_in_range(glo, ghi, tet_leaves_);
-    tet_cells_.resize(6 * tet_leaves_.size());
-    for (size_t i = 0; i < tet_leaves_.size(); ++i)
-      front_.query().leaf_cells(tet_leaves_[i], &tet_cells_[6 * i], &tet_cells_[6 * i + 3]);
+    cells_of(tet_leaves_, tet_cells_);
   }
   const LeafCover cover = owns_every_leaf_ ? LeafCover{tet_leaves_, tet_cells_} : LeafCover{leaves_, leaf_cells_};
   make_removal_tet(front_, tree_, out_, f, p, added_, shrunk_, &cover);

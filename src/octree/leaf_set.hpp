@@ -23,14 +23,7 @@ class LeafSet {
   bool contains(size_t leaf) const { return (words_[leaf >> 6] >> (leaf & 63)) & 1; }
 
   // True when a member lies in [b, e).
-  bool any(size_t b, size_t e) const {
-    if (b >= e) return false;
-    const size_t wb = b >> 6, we = (e - 1) >> 6;
-    if (wb == we) return (words_[wb] & bits_from(b) & bits_through(e - 1)) != 0;
-    if ((words_[wb] & bits_from(b)) != 0 || (words_[we] & bits_through(e - 1)) != 0) return true;
-    // The whole words in between, by their summary bits.
-    return any_bit(summary_, wb + 1, we);
-  }
+  bool any(size_t b, size_t e) const { return any_bit(words_, b, e, &summary_); }
 
   // Calls visit(leaf) for every member in [b, e), ascending.
   template <class Visit>
@@ -56,12 +49,14 @@ class LeafSet {
  private:
   static uint64_t bits_from(size_t i) { return ~uint64_t{0} << (i & 63); }
   static uint64_t bits_through(size_t i) { return ~uint64_t{0} >> (63 - (i & 63)); }
-  // True when a bit in [b, e) of `bits` is set.
-  static bool any_bit(const std::vector<uint64_t>& bits, size_t b, size_t e) {
+  // True when a bit in [b, e) of `bits` is set; the whole words in between
+  // are looked up in `summary` (a bit per word of `bits`) when given.
+  static bool any_bit(const std::vector<uint64_t>& bits, size_t b, size_t e, const std::vector<uint64_t>* summary) {
     if (b >= e) return false;
     const size_t wb = b >> 6, we = (e - 1) >> 6;
     if (wb == we) return (bits[wb] & bits_from(b) & bits_through(e - 1)) != 0;
     if ((bits[wb] & bits_from(b)) != 0 || (bits[we] & bits_through(e - 1)) != 0) return true;
+    if (summary) return any_bit(*summary, wb + 1, we, nullptr);
     for (size_t w = wb + 1; w < we; ++w)
       if (bits[w] != 0) return true;
     return false;
