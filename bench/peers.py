@@ -3,6 +3,7 @@
 # to a file `partet check` reads. Every tool meshes the same surface, kept
 # exactly (TetGen -Y, a Gmsh discrete surface that is not remeshed, Netgen
 # through bench/nglib_driver.cpp): `partet check --surface` verifies it.
+import json
 import os
 import shutil
 import subprocess
@@ -75,6 +76,24 @@ def prepare(tool, surface, run_dir, partet, nglib_driver):
     options = ["--no-optimize"] if tool == "partet-noopt" else []
     return (ranks + [partet, surface["off"], "-o", "out.vtu", "--report", "report.json", "-q"] + options,
             os.path.join(run_dir, "out.vtu"))
+
+
+def is_optimization(step):
+    """The report's steps that are quality optimization: the optimizer, its
+    local restarts and the small meshes' alternatives (meshed again and
+    optimized, kept by quality)."""
+    return step in ("optimize", "local restarts") or step.endswith(" alternative")
+
+
+def optimization_cpu(tool, run_dir):
+    """(CPU s of the optimization steps, CPU s of all steps) of a partet
+    run's report (summed over ranks), or (None, None) for the peers."""
+    if not tool.startswith("partet"):
+        return None, None
+    with open(os.path.join(run_dir, "report.json")) as f:
+        steps = json.load(f)["steps"]
+    total = sum(sum(s["cpu_s"]) for s in steps)
+    return sum(sum(s["cpu_s"]) for s in steps if is_optimization(s["name"])), total
 
 
 def finish(tool, run_dir):

@@ -2,7 +2,8 @@
 # as table.md with a summary (median tets/s per tool, partet's median
 # per-input ratios against TetGen -pYq1.414 and Gmsh HXT) and the quality
 # comparison of issue 5 (partet against the best peer, next to the bound
-# the input's own dihedral angles force).
+# the input's own dihedral angles force) with partet's optimization share
+# of its CPU time.
 import json
 import statistics
 
@@ -10,7 +11,8 @@ COLUMNS = [("tool", "tool", "s"), ("input", "input", "s"), ("triangles", "triang
            ("tets", "tets", "d"), ("wall_s", "wall s", ".2f"), ("tets_per_s", "tets/s", ".0f"),
            ("peak_rss_mb", "peak RSS MB", ".0f"), ("bytes_per_tet", "bytes/tet", ".0f"),
            ("min_dihedral_deg", "min dihedral deg", ".3g"), ("pct_under_10", "% tets < 10 deg", ".2f"),
-           ("radius_ratio_mean", "mean radius ratio", ".3f"), ("valid", "valid", "s")]
+           ("radius_ratio_mean", "mean radius ratio", ".3f"), ("optimization_share", "opt share", ".2f"),
+           ("valid", "valid", "s")]
 
 # Speeds on smaller inputs measure process start-up (Gmsh's is ~0.2 s).
 MIN_TRIANGLES = 1000
@@ -63,6 +65,35 @@ def ratio_summary(rows, mine, peers):
     return lines
 
 
+def optimization_share(row):
+    """The optimization steps' share of a partet run's CPU time (its report;
+    None for the peers and for rows stored before it was recorded)."""
+    opt, total = row.get("optimization_cpu_s"), row.get("cpu_s")
+    return opt / total if opt is not None and total else None
+
+
+def share_summary(rows, tools):
+    """Issue 5 asks the optimization to take at most a third of the meshing
+    time: per partet tool, the median share over inputs and the share of
+    the summed CPU, over all inputs and over those of MIN_TRIANGLES+."""
+    lines = ["| tool | inputs | median share | share of the summed CPU | inputs of %d+ triangles | median share |"
+             " share of the summed CPU |" % MIN_TRIANGLES, "|---|---:|---:|---:|---:|---:|---:|"]
+    for tool in tools:
+        mine = [r for r in rows if r["tool"] == tool and good(r) and optimization_share(r) is not None]
+        if not mine:
+            continue
+        cells = []
+        for subset in (mine, [r for r in mine if r["triangles"] >= MIN_TRIANGLES]):
+            if not subset:
+                cells += ["0", "", ""]
+                continue
+            summed = sum(r["optimization_cpu_s"] for r in subset) / sum(r["cpu_s"] for r in subset)
+            cells += [str(len(subset)), format(statistics.median(optimization_share(r) for r in subset), ".3f"),
+                      format(summed, ".3f")]
+        lines.append("| %s | %s |" % (tool, " | ".join(cells)))
+    return lines
+
+
 def quality_comparison(rows, forced):
     """Issue 5: partet's worst angles next to the best peer's and the input's bound."""
     lines = ["| input | forced by input: min surface dihedral deg | partet min dihedral deg | best peer min dihedral deg"
@@ -91,7 +122,8 @@ def write(rows, forced, tools, out_dir, header):
              "|" + "---|" * 2 + "---:|" * (len(COLUMNS) - 3) + "---|---|"]
     for r in rows:
         note = r["status"] + (": " + r["error"].replace("|", "/").replace("\n", " ") if r["error"] else "")
-        lines.append("| " + " | ".join(cell(r[key], fmt) for key, _, fmt in COLUMNS) + " | " + note + " |")
+        values = dict(r, optimization_share=optimization_share(r))
+        lines.append("| " + " | ".join(cell(values.get(key), fmt) for key, _, fmt in COLUMNS) + " | " + note + " |")
     lines += ["", "### Speed per tool", ""] + rate_summary(rows, tools)
     lines += ["", "### partet against the peers", ""] + ratio_summary(rows, "partet", [t for t in ("tetgen-q", "gmsh-hxt")
                                                                                         if t in tools])
@@ -100,5 +132,9 @@ def write(rows, forced, tools, out_dir, header):
             lines += ["", "### " + title, ""] + ratio_summary(
                 rows, variant, [t for t in ("tetgen-q", "gmsh-hxt", "partet") if t in tools])
     lines += ["", "### Worst angles (issue 5)", ""] + quality_comparison(rows, forced)
+    lines += ["", "### Optimization's share of partet's CPU time (issue 5: at most a third)", "",
+              "The optimizer, its local restarts and the small meshes' alternatives, from each run's report "
+              "(the last of its runs; summed over ranks).", ""]
+    lines += share_summary(rows, [t for t in tools if t.startswith("partet") and t != "partet-noopt"])
     with open(out_dir + "/table.md", "w") as f:
         f.write("\n".join(lines) + "\n")
