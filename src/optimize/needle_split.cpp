@@ -65,7 +65,9 @@ bool try_split(TetTopology& topo, const TetTopology::Ring& ring, double mean, Sm
   double new_sum = 0;
   for (size_t i = 0; i < s.new_tets.size(); i += 4) new_sum += radius_ratio_of(topo, &s.new_tets[i]);
   const double added = static_cast<double>(s.new_tets.size() / 4 - s.cavity.size());
-  if (summarize_angles(topo, s.new_tets).no_worse_than(before) && new_sum - old_sum >= mean * added) {
+  // The radius ratios first: most splits are refused for them (femur r1:
+  // 2,132 of 2,645), and the angles cost an atan2 per tet.
+  if (new_sum - old_sum >= mean * added && summarize_angles(topo, s.new_tets).no_worse_than(before)) {
     s.created.clear();
     topo.replace(s.cavity, s.new_tets, s.created);
     return true;
