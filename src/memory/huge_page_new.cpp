@@ -21,8 +21,7 @@
 namespace partet {
 namespace {
 
-constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
-constexpr size_t kPage = 4096;
+#if PARTET_HUGE_PAGE_NEW
 
 struct MappedBlock {
   void* address;
@@ -33,6 +32,9 @@ struct MappedBlock {
 std::mutex registry_mutex;
 MappedBlock registry[kHugeBlockSlots];
 size_t registry_size = 0;
+
+constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
+constexpr size_t kPage = 4096;
 
 // A 2 MiB-aligned mapping of `size` bytes (rounded up to pages) advised for
 // huge pages, registered; nullptr when the system refuses it or the registry
@@ -75,13 +77,19 @@ bool unmap_block(void* p) {
   return true;
 }
 
+#endif
+
 }  // namespace
 
 bool huge_page_new_in_use() { return PARTET_HUGE_PAGE_NEW != 0; }
 
 size_t huge_page_blocks_live() {
+#if PARTET_HUGE_PAGE_NEW
   std::lock_guard<std::mutex> lock(registry_mutex);
   return registry_size;
+#else
+  return 0;
+#endif
 }
 
 }  // namespace partet

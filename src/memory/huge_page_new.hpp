@@ -27,7 +27,7 @@ inline constexpr size_t kHugeBlockSlots = 1024;
 // sanitizer builds, which leave the allocator to the sanitizer).
 bool huge_page_new_in_use();
 
-// Blocks mapped by operator new and not yet deleted.
+// Blocks mapped by operator new and not yet deleted (0 in sanitizer builds).
 size_t huge_page_blocks_live();
 
 }  // namespace partet
