@@ -110,9 +110,12 @@ struct RemovalOptions {
   // faces left, the next one goes on from there before the attempts start
   // over (treeless_removal.hpp, "Short growth first").
   size_t go_on_faces = 64;
-  // Tree-less removals only: the rescue strategies alone, for a state from
-  // which short growth and the default already failed.
-  bool rescues_only = false;
+  // Tree-less removals only: at most this many attempts from the call's
+  // starting state (each a strategy and those going on from it); 1 for a
+  // first try whose failure the caller discards (run_mesh on a tree
+  // refined for a thin core: short growth, the default going on from a
+  // few faces, and no more).
+  size_t starts = SIZE_MAX;
   // Tree-less removals only: when no strategy closes the front, run the one
   // that left the fewest faces again (its mesh and front are what the call
   // leaves); false when the caller discards them anyway.

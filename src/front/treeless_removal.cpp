@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 #include "core/error.hpp"
@@ -60,19 +61,21 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   RemovalMemo own;
   RemovalMemo& m = memo ? *memo : own;
   std::vector<TreelessStrategy> strategies;
-  if (!options.rescues_only) {
-    if (options.short_growth_first) strategies.push_back(TreelessStrategy::kShortGrowth);
-    strategies.push_back(TreelessStrategy::kDefault);
-  }
+  if (options.short_growth_first) strategies.push_back(TreelessStrategy::kShortGrowth);
+  strategies.push_back(TreelessStrategy::kDefault);
   const size_t rescues = std::min(static_cast<size_t>(std::max(options.rescues, 0)), std::size(kRescueStrategies));
   strategies.insert(strategies.end(), kRescueStrategies, kRescueStrategies + rescues);
-  PARTET_ASSERT(!strategies.empty(), "the rescue strategies alone, with none of them");
+  PARTET_ASSERT(options.starts > 0, "tree-less removals with no attempt");
   if (strategies.size() == 1) {
     TreelessCounts n = run_treeless_rounds(front, tree, root, out, options, m, strategies[0]);
     n.faces_left_by_attempt = {n.faces_left};
     return n;
   }
-  const TreelessState start{front, tree.cls, out, m};
+  // A copy of the starting state only when an attempt may start from it
+  // again (it is a whole mesh at the peak).
+  const bool restarts = options.starts > 1 || options.rerun_best;
+  const std::optional<TreelessState> start =
+      restarts ? std::optional<TreelessState>(TreelessState{front, tree.cls, out, m}) : std::nullopt;
   // Each attempt runs from the call's start: one strategy, then, while it
   // stalls with at most options.go_on_faces faces, the next strategies
   // going on from where the last one stopped. chains[a] is how attempt a's
@@ -80,8 +83,8 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   std::vector<size_t> faces_left;
   std::vector<std::vector<TreelessStrategy>> chains;
   TreelessCounts n;
-  for (size_t first = 0; first < strategies.size(); ++first) {
-    if (!faces_left.empty()) start.restore(front, tree, out, m);
+  for (size_t first = 0; first < std::min(strategies.size(), options.starts); ++first) {
+    if (!faces_left.empty()) start->restore(front, tree, out, m);
     std::vector<TreelessStrategy> chain;
     for (size_t k = first; k < strategies.size(); ++k) {
       if (k > first && n.faces_left > options.go_on_faces) break;
@@ -100,7 +103,7 @@ TreelessCounts remove_faces_treeless(Front& front, LinearOctree& tree, const Roo
   const auto fewest = std::min_element(faces_left.begin(), faces_left.end());
   const size_t best = static_cast<size_t>(fewest - faces_left.begin());
   if (options.rerun_best && best + 1 < faces_left.size()) {
-    start.restore(front, tree, out, m);
+    start->restore(front, tree, out, m);
     for (const TreelessStrategy strategy : chains[best])
       n = run_treeless_rounds(front, tree, root, out, options, m, strategy);
     PARTET_ASSERT(n.faces_left == *fewest, "a tree-less attempt run again left other faces");

@@ -341,31 +341,31 @@ OptimizeOptions optimize_options(const MeshOptions& o) {
   return out;
 }
 
-// Which attempt of run_mesh this is (see run_mesh).
-enum class TreeAttempt {
-  kFirst,           // the tree refined for a thin core, if refined: short growth and the default only
-  kFirstTree,       // the first tree, every strategy
-  kRefinedRescues,  // the refined tree again, the rescue strategies only
-  kShapeOrder,      // the first tree, targets best shape first, every strategy
+// One attempt of run_mesh (see there): the tree, whether the Delaunay fill
+// runs, and the tree-less removals' strategies.
+struct MeshAttempt {
+  bool fill = true;          // the Delaunay fill, where the options and the input have it
+  bool once = false;         // one tree-less start: short growth, the default going on from a few faces
+  bool short_growth = true;  // short growth first (false: it failed on this tree and fill already)
+  bool shape_order = false;  // targets best shape first
+  bool last = false;         // faces left end the run (exit 3); so do they without tree-less removals
+                             // on a tree not refined for a thin core
+  const char* report_key = nullptr;  // set true in the report, for the attempts after the first
 };
 
-// Thrown on every rank when the front did not close on a tree that
-// refine_thin_core refined: run_mesh meshes again without the refinement.
-struct ThinCoreRetry {};
-// Thrown on every rank when it did not close on the first tree either:
-// run_mesh tries the refined tree's rescue strategies.
-struct RefinedRescueRetry {};
-// Thrown on every rank when the attempts with targets in Delaunay order
-// all left faces: run_mesh tries the first tree with the shape order.
-struct ShapeOrderRetry {};
+// Thrown on every rank when an attempt that is not the last leaves front
+// faces: whether its tree was refined for a thin core and whether the
+// Delaunay fill ran, which decide the attempts that follow.
+struct FrontLeftOpen {
+  bool refined = false;
+  bool filled = false;
+};
 
-int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, TreeAttempt attempt) {
+int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, const MeshAttempt& attempt) {
   RunReport report(comm, log);
   report.set("input", options.input);
   report.set("options", options_json(options));
-  if (attempt == TreeAttempt::kFirstTree) report.set("retried without the thin-core refinement", true);
-  if (attempt == TreeAttempt::kRefinedRescues) report.set("retried with the rescue strategies on the refined tree", true);
-  if (attempt == TreeAttempt::kShapeOrder) report.set("retried with targets best shape first", true);
+  if (attempt.report_key) report.set(attempt.report_key, true);
   int code = kExitOk;
   std::string message;
   MeshState s;
@@ -509,8 +509,9 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       c["offset vertices"] = offset;
       return c;
     });
-    if (options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&
-        s.surface.num_triangles() > kDelaunayFillTriangles) {
+    const bool filled = attempt.fill && options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&
+                        s.surface.num_triangles() > kDelaunayFillTriangles;
+    if (filled) {
       report.run_step("delaunay fill", [&] {
         return s.whole ? fill_step(s.initial_front, s.tree, s.core.mesh) : ojson::object();
       });
@@ -534,20 +535,16 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
         s.mesh = std::move(s.core.mesh);
         const RankLeaves ranks{&s.boundary.front.leaves, &s.boundary.separators};
         return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo,
-                                 attempt == TreeAttempt::kShapeOrder);
+                                 attempt.shape_order);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
-        // On a refined tree, the rescues wait for the first tree (every
-        // corpus input whose tree is refined closes without them; the
-        // needle family of stress-check failed on the refined tree for
-        // minutes, then closed on the first in seconds).
         RemovalOptions treeless_options;
-        if (attempt == TreeAttempt::kFirst && s.thin_core_refined) {
-          treeless_options.rescues = 0;
-          treeless_options.rerun_best = false;  // a failure here is discarded (ThinCoreRetry)
+        if (attempt.once) {
+          treeless_options.starts = 1;
+          treeless_options.rerun_best = false;  // a failure here is discarded (FrontLeftOpen)
         }
-        treeless_options.rescues_only = attempt == TreeAttempt::kRefinedRescues;
-        treeless_options.shape_order = attempt == TreeAttempt::kShapeOrder;
+        treeless_options.short_growth_first = attempt.short_growth;
+        treeless_options.shape_order = attempt.shape_order;
         report.run_step("face removals (tree-less)", [&] {
           return treeless_step(comm, s.initial_front, s.tree, s.root, s.mesh, front, memo, treeless_note,
                                options.treeless_on_ranks, treeless_options);
@@ -555,11 +552,8 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
       }
       if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
-      if (faces_left > 0 && s.thin_core_refined && attempt == TreeAttempt::kFirst) throw ThinCoreRetry{};
-      if (faces_left > 0 && attempt == TreeAttempt::kFirstTree && options.treeless) throw RefinedRescueRetry{};
-      const bool last_in_delaunay_order = attempt == TreeAttempt::kRefinedRescues ||
-                                          (attempt == TreeAttempt::kFirst && !s.thin_core_refined);
-      if (faces_left > 0 && last_in_delaunay_order && options.treeless) throw ShapeOrderRetry{};
+      if (faces_left > 0 && !attempt.last && (options.treeless || s.thin_core_refined))
+        throw FrontLeftOpen{s.thin_core_refined, comm.max(static_cast<int64_t>(filled)) > 0};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
@@ -635,47 +629,75 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, Tree
   return code;
 }
 
-// Closure comes first: the thin-core refinement is for quality, and the
-// first tree is what meshed before it, so a front that does not close on
-// the refined tree with short growth or the default strategy is meshed
-// again on the first one, with every strategy; when that fails too, the
-// refined tree's rescue strategies have their turn.
-int attempts_in_delaunay_order(const MeshOptions& options, const Comm& comm, const Log& log) {
-  try {
-    return mesh_once(options, comm, log, TreeAttempt::kFirst);
-  } catch (const ThinCoreRetry&) {
-    log.note(file_basename(options.input) +
-             ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
-  }
-  MeshOptions first = options;
-  first.min_core = 0;
-  try {
-    return mesh_once(first, comm, log, TreeAttempt::kFirstTree);
-  } catch (const RefinedRescueRetry&) {
-    log.note(file_basename(options.input) +
-             ": the front did not close on the first tree either: the rescue strategies on the refined tree");
-  }
-  return mesh_once(options, comm, log, TreeAttempt::kRefinedRescues);
-}
-
 }  // namespace
 
-// The face removals take targets in Delaunay order (face_removal.hpp); when
-// no attempt closes the front that way, the first tree is meshed once more
-// with targets best shape first, every strategy: the orders leave
-// different pockets, and where the Delaunay order's cannot be closed the
-// shape order's may be (stress-check seed 673).
+// Closure comes first, then the cheap attempts, then the costly ones. The
+// tree-less removals' short growth fails in a few rounds without a smaller
+// front, their other strategies only after many (a needle whose fronts do
+// not close spends minutes in each). The thin-core refinement is for
+// quality and the first tree is what meshed before it; the Delaunay fill
+// is for speed, and its front on a corrugated needle (most input triangles
+// not Delaunay faces) may not close where the front from the surface and
+// the core does. So:
+//  1. the tree as built (refined for a thin core where it needs it), with
+//     the fill, short growth only (the default going on from a few faces:
+//     every corpus input closes here);
+//  2. when that tree was refined, the first tree the same way;
+//  3. the first tree without the fill (where the fill ran), the same way;
+//  4. the first tree with the fill, the default and the rescue strategies;
+//  5. when the tree was refined, the refined tree the same way;
+//  6. the first tree with targets best shape first, every strategy: the
+//     orders leave different pockets, and where the Delaunay order's cannot
+//     be closed the shape order's may be (stress-check seed 673).
+// Without the tree-less removals only 1 and 2 run. The attempts are
+// deterministic, so none repeats another (stress-check seed 5193: 1 fails
+// in 21 s, 2 in 38, 3 closes in 20; it took over ten minutes when 2 ran
+// every strategy).
 int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
-  try {
-    return attempts_in_delaunay_order(options, comm, log);
-  } catch (const ShapeOrderRetry&) {
-    log.note(file_basename(options.input) +
-             ": the front did not close with targets in Delaunay order: meshing again on the first tree with targets "
-             "best shape first");
-  }
+  const std::string name = file_basename(options.input);
   MeshOptions first = options;
   first.min_core = 0;
-  return mesh_once(first, comm, log, TreeAttempt::kShapeOrder);
+  FrontLeftOpen open;
+  try {
+    return mesh_once(options, comm, log, {.once = options.treeless});
+  } catch (const FrontLeftOpen& e) {
+    open = e;
+  }
+  if (open.refined) {
+    log.note(name + ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
+    try {
+      return mesh_once(first, comm, log,
+                       {.once = options.treeless, .report_key = "retried without the thin-core refinement"});
+    } catch (const FrontLeftOpen&) {
+    }
+  }
+  if (open.filled) {
+    log.note(name + ": the front did not close after the Delaunay fill: meshing again without it");
+    try {
+      return mesh_once(first, comm, log,
+                       {.fill = false, .once = true, .report_key = "retried without the Delaunay fill"});
+    } catch (const FrontLeftOpen&) {
+    }
+  }
+  log.note(name + ": short growth did not close the front: the other strategies on the first tree");
+  try {
+    return mesh_once(first, comm, log,
+                     {.short_growth = false, .report_key = "retried with the other strategies"});
+  } catch (const FrontLeftOpen&) {
+  }
+  if (open.refined) {
+    log.note(name + ": the front did not close on the first tree either: the other strategies on the refined tree");
+    try {
+      return mesh_once(options, comm, log,
+                       {.short_growth = false, .report_key = "retried with the other strategies on the refined tree"});
+    } catch (const FrontLeftOpen&) {
+    }
+  }
+  log.note(name + ": the front did not close with targets in Delaunay order: meshing again on the first tree with "
+                  "targets best shape first");
+  return mesh_once(first, comm, log,
+                   {.shape_order = true, .last = true,
+                    .report_key = "retried with targets best shape first"});
 }
 
 }  // namespace partet

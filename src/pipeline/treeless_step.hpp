@@ -56,7 +56,7 @@ constexpr size_t kRankStallRounds = 16;
 // removals kept. `front`, `mesh` and `memo` are rank 0's after the
 // tree-supported removals (null, empty and empty elsewhere). Without
 // `on_ranks` (or on one rank) rank 0 makes the removals alone. `options`
-// (its strategies: rescues, rescues_only) go to rank 0's
+// (its strategies: starts, short growth first, rescues) go to rank 0's
 // remove_faces_treeless.
 ojson treeless_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                     TetMesh& mesh, std::unique_ptr<Front>& front, RemovalMemo& memo, std::string& note,
