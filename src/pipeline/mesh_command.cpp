@@ -1,4 +1,4 @@
-// run_mesh: the pipeline of DESIGN.md, one report step per stage: read and
+// mesh_once: the pipeline of DESIGN.md, one report step per stage: read and
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
 // balance), classify leaves, make the interior set manifold (demoting
 // leaves to too close), template the interior, on P > 1 ranks partition
@@ -11,7 +11,7 @@
 // writes the templated core and exits 0. Then quality optimization, on the
 // ranks' parts when P > 1 (optimize_step.hpp), its alternatives on small
 // meshes, and restarts on the band around the worst tet (restarts_step.hpp).
-#include "pipeline/mesh_command.hpp"
+#include "pipeline/mesh_attempt.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -341,25 +341,7 @@ OptimizeOptions optimize_options(const MeshOptions& o) {
   return out;
 }
 
-// One attempt of run_mesh (see there): the tree, whether the Delaunay fill
-// runs, and the tree-less removals' strategies.
-struct MeshAttempt {
-  bool fill = true;          // the Delaunay fill, where the options and the input have it
-  bool once = false;         // one tree-less start: short growth, the default going on from a few faces
-  bool short_growth = true;  // short growth first (false: it failed on this tree and fill already)
-  bool shape_order = false;  // targets best shape first
-  bool last = false;         // faces left end the run (exit 3); so do they without tree-less removals
-                             // on a tree not refined for a thin core
-  const char* report_key = nullptr;  // set true in the report, for the attempts after the first
-};
-
-// Thrown on every rank when an attempt that is not the last leaves front
-// faces: whether its tree was refined for a thin core and whether the
-// Delaunay fill ran, which decide the attempts that follow.
-struct FrontLeftOpen {
-  bool refined = false;
-  bool filled = false;
-};
+}  // namespace
 
 int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, const MeshAttempt& attempt) {
   RunReport report(comm, log);
@@ -552,8 +534,9 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
       }
       if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
+      const bool filled_on_root = comm.max(static_cast<int64_t>(filled)) > 0;  // the surface is rank 0's
       if (faces_left > 0 && !attempt.last && (options.treeless || s.thin_core_refined))
-        throw FrontLeftOpen{s.thin_core_refined, comm.max(static_cast<int64_t>(filled)) > 0};
+        throw FrontLeftOpen{s.thin_core_refined, filled_on_root};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {
@@ -627,77 +610,6 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
   if (!options.report.empty()) collective_step(comm, [&] { report.write(options.report); });
   if (code != kExitOk) throw Error(code, message);
   return code;
-}
-
-}  // namespace
-
-// Closure comes first, then the cheap attempts, then the costly ones. The
-// tree-less removals' short growth fails in a few rounds without a smaller
-// front, their other strategies only after many (a needle whose fronts do
-// not close spends minutes in each). The thin-core refinement is for
-// quality and the first tree is what meshed before it; the Delaunay fill
-// is for speed, and its front on a corrugated needle (most input triangles
-// not Delaunay faces) may not close where the front from the surface and
-// the core does. So:
-//  1. the tree as built (refined for a thin core where it needs it), with
-//     the fill, short growth only (the default going on from a few faces:
-//     every corpus input closes here);
-//  2. when that tree was refined, the first tree the same way;
-//  3. the first tree without the fill (where the fill ran), the same way;
-//  4. the first tree with the fill, the default and the rescue strategies;
-//  5. when the tree was refined, the refined tree the same way;
-//  6. the first tree with targets best shape first, every strategy: the
-//     orders leave different pockets, and where the Delaunay order's cannot
-//     be closed the shape order's may be (stress-check seed 673).
-// Without the tree-less removals only 1 and 2 run. The attempts are
-// deterministic, so none repeats another (stress-check seed 5193: 1 fails
-// in 21 s, 2 in 38, 3 closes in 20; it took over ten minutes when 2 ran
-// every strategy).
-int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
-  const std::string name = file_basename(options.input);
-  MeshOptions first = options;
-  first.min_core = 0;
-  FrontLeftOpen open;
-  try {
-    return mesh_once(options, comm, log, {.once = options.treeless});
-  } catch (const FrontLeftOpen& e) {
-    open = e;
-  }
-  if (open.refined) {
-    log.note(name + ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
-    try {
-      return mesh_once(first, comm, log,
-                       {.once = options.treeless, .report_key = "retried without the thin-core refinement"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  if (open.filled) {
-    log.note(name + ": the front did not close after the Delaunay fill: meshing again without it");
-    try {
-      return mesh_once(first, comm, log,
-                       {.fill = false, .once = true, .report_key = "retried without the Delaunay fill"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  log.note(name + ": short growth did not close the front: the other strategies on the first tree");
-  try {
-    return mesh_once(first, comm, log,
-                     {.short_growth = false, .report_key = "retried with the other strategies"});
-  } catch (const FrontLeftOpen&) {
-  }
-  if (open.refined) {
-    log.note(name + ": the front did not close on the first tree either: the other strategies on the refined tree");
-    try {
-      return mesh_once(options, comm, log,
-                       {.short_growth = false, .report_key = "retried with the other strategies on the refined tree"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  log.note(name + ": the front did not close with targets in Delaunay order: meshing again on the first tree with "
-                  "targets best shape first");
-  return mesh_once(first, comm, log,
-                   {.shape_order = true, .last = true,
-                    .report_key = "retried with targets best shape first"});
 }
 
 }  // namespace partet
