@@ -16,6 +16,11 @@ struct MeshAttempt {
   bool once = false;         // one tree-less start: short growth, the default going on from a few faces
   bool short_growth = true;  // short growth first (false: it failed on this tree and fill already)
   bool shape_order = false;  // targets best shape first
+  // On P > 1 ranks, the tree-supported removals on rank 0 alone, as on one
+  // rank (tree_removal_step.hpp), so that the tree-less removals get one
+  // rank's front: the retries (the ranks' front for stress seed 5193
+  // without the fill left short growth 1,078 faces; one rank's closes).
+  bool removals_on_root = false;
   bool last = false;         // faces left end the run (exit 3); so do they without tree-less removals
                              // on a tree not refined for a thin core
   const char* report_key = nullptr;  // set true in the report, for the attempts after the first

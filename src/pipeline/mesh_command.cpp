@@ -517,7 +517,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
         s.mesh = std::move(s.core.mesh);
         const RankLeaves ranks{&s.boundary.front.leaves, &s.boundary.separators};
         return tree_removal_step(comm, s.initial_front, s.tree, s.root, s.mesh, ranks, front, memo,
-                                 attempt.shape_order);
+                                 attempt.shape_order, attempt.removals_on_root);
       });
       if (options.treeless && comm.max(static_cast<int64_t>(front ? front->num_alive_faces() : 0)) > 0) {
         RemovalOptions treeless_options;

@@ -28,8 +28,10 @@ namespace partet {
 //     be closed the shape order's may be (stress-check seed 673).
 // Without the tree-less removals only 1 and 2 run. The attempts are
 // deterministic, so none repeats another (stress-check seed 5193: 1 fails
-// in 21 s, 2 in 38, 3 closes in 20; it took over ten minutes when 2 ran
-// every strategy).
+// in 21 s, 2 in 20, 3 closes in 20; it took over ten minutes when 2 ran
+// every strategy). On P > 1 ranks the retries (2-6) make the
+// tree-supported removals on rank 0 alone: the tree-less removals then
+// start from one rank's front, so the ranks close what one rank closes.
 int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   const std::string name = file_basename(options.input);
   MeshOptions first = options;
@@ -44,7 +46,9 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     log.note(name + ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
     try {
       return mesh_once(first, comm, log,
-                       {.once = options.treeless, .report_key = "retried without the thin-core refinement"});
+                       {.once = options.treeless,
+                        .removals_on_root = true,
+                        .report_key = "retried without the thin-core refinement"});
     } catch (const FrontLeftOpen&) {
     }
   }
@@ -52,28 +56,37 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     log.note(name + ": the front did not close after the Delaunay fill: meshing again without it");
     try {
       return mesh_once(first, comm, log,
-                       {.fill = false, .once = true, .report_key = "retried without the Delaunay fill"});
+                       {.fill = false,
+                        .once = true,
+                        .removals_on_root = true,
+                        .report_key = "retried without the Delaunay fill"});
     } catch (const FrontLeftOpen&) {
     }
   }
   log.note(name + ": short growth did not close the front: the other strategies on the first tree");
   try {
     return mesh_once(first, comm, log,
-                     {.short_growth = false, .report_key = "retried with the other strategies"});
+                     {.short_growth = false,
+                      .removals_on_root = true,
+                      .report_key = "retried with the other strategies"});
   } catch (const FrontLeftOpen&) {
   }
   if (open.refined) {
     log.note(name + ": the front did not close on the first tree either: the other strategies on the refined tree");
     try {
       return mesh_once(options, comm, log,
-                       {.short_growth = false, .report_key = "retried with the other strategies on the refined tree"});
+                       {.short_growth = false,
+                        .removals_on_root = true,
+                        .report_key = "retried with the other strategies on the refined tree"});
     } catch (const FrontLeftOpen&) {
     }
   }
   log.note(name + ": the front did not close with targets in Delaunay order: meshing again on the first tree with "
                   "targets best shape first");
   return mesh_once(first, comm, log,
-                   {.shape_order = true, .last = true,
+                   {.shape_order = true,
+                    .removals_on_root = true,
+                    .last = true,
                     .report_key = "retried with targets best shape first"});
 }
 

@@ -105,10 +105,15 @@ void take_failures(const std::string& image, size_t& pos, const Front& front, Re
 
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                         TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
-                        bool shape_order) {
+                        bool shape_order, bool on_root) {
   const bool root_rank = comm.rank() == 0;
-  const bool distributed = comm.size() > 1;
+  const bool distributed = comm.size() > 1 && !on_root;
   ojson c;
+  if (on_root && !root_rank) {
+    front.reset();
+    mesh = TetMesh{};
+    return c;
+  }
   front = std::make_unique<Front>(initial, tree, root);
   size_t tets = 0, passes = 0, checks = 0, skipped = 0;
   RemovalMemo shaped_memo;  // the shaped passes' failures (this rank's)

@@ -65,9 +65,12 @@ struct RankLeaves {
 // rank, on it). On return `front` is rank 0's front (null elsewhere),
 // `mesh` rank 0's tets (empty elsewhere) and `memo` what rank 0's passes
 // learnt. `ranks` is ignored on one rank. `shape_order`: targets best
-// shape first (RemovalOptions::shape_order).
+// shape first (RemovalOptions::shape_order). `on_root`: on P > 1 ranks,
+// rank 0 alone makes the removals over its whole front, as on one rank
+// (run_mesh's retries: the front it leaves is one rank's), and `ranks` is
+// ignored.
 ojson tree_removal_step(const Comm& comm, const InitialFront& initial, LinearOctree& tree, const RootCube& root,
                         TetMesh& mesh, const RankLeaves& ranks, std::unique_ptr<Front>& front, RemovalMemo& memo,
-                        bool shape_order);
+                        bool shape_order, bool on_root);
 
 }  // namespace partet
