@@ -1,7 +1,9 @@
 // run_mesh: the attempts of the meshing pipeline in turn, cheap ones first,
 // until one closes the front (see the comment below).
+#include <optional>
 #include <string>
 
+#include "core/error.hpp"
 #include "io/file_bytes.hpp"
 #include "pipeline/mesh_attempt.hpp"
 #include "pipeline/mesh_command.hpp"
@@ -46,63 +48,40 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   } catch (const FrontLeftOpen& e) {
     open = e;
   }
-  if (comm.size() > 1 && options.treeless) {
-    log.note(name + ": the front did not close after the face removals on the ranks: meshing again with rank 0 "
-                    "making them, as one rank does");
+  // A retry, after a note saying why: its exit code, or none when it left
+  // the front open too.
+  const auto retry = [&](const std::string& why, const MeshOptions& o, MeshAttempt attempt) -> std::optional<int> {
+    log.note(name + ": " + why);
+    attempt.removals_on_root = true;
     try {
-      return mesh_once(options, comm, log,
-                       {.once = true,
-                        .removals_on_root = true,
-                        .report_key = "retried with the tree-supported removals on rank 0"});
+      return mesh_once(o, comm, log, attempt);
     } catch (const FrontLeftOpen&) {
+      return std::nullopt;
     }
-  }
-  if (open.refined) {
-    log.note(name + ": the front did not close on the tree refined for a thin core: meshing again on the first tree");
-    try {
-      return mesh_once(first, comm, log,
-                       {.once = options.treeless,
-                        .removals_on_root = true,
-                        .report_key = "retried without the thin-core refinement"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  if (open.filled) {
-    log.note(name + ": the front did not close after the Delaunay fill: meshing again without it");
-    try {
-      return mesh_once(first, comm, log,
-                       {.fill = false,
-                        .once = true,
-                        .removals_on_root = true,
-                        .report_key = "retried without the Delaunay fill"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  log.note(name + ": short growth did not close the front: the other strategies on the first tree");
-  try {
-    return mesh_once(first, comm, log,
-                     {.short_growth = false,
-                      .removals_on_root = true,
-                      .report_key = "retried with the other strategies"});
-  } catch (const FrontLeftOpen&) {
-  }
-  if (open.refined) {
-    log.note(name + ": the front did not close on the first tree either: the other strategies on the refined tree");
-    try {
-      return mesh_once(options, comm, log,
-                       {.short_growth = false,
-                        .removals_on_root = true,
-                        .report_key = "retried with the other strategies on the refined tree"});
-    } catch (const FrontLeftOpen&) {
-    }
-  }
-  log.note(name + ": the front did not close with targets in Delaunay order: meshing again on the first tree with "
-                  "targets best shape first");
-  return mesh_once(first, comm, log,
-                   {.shape_order = true,
-                    .removals_on_root = true,
-                    .last = true,
-                    .report_key = "retried with targets best shape first"});
+  };
+  std::optional<int> code;
+  if (comm.size() > 1 && options.treeless)
+    code = retry("the front did not close after the face removals on the ranks: meshing again with rank 0 making "
+                 "them, as one rank does",
+                 options, {.once = true, .report_key = "retried with the tree-supported removals on rank 0"});
+  if (!code && open.refined)
+    code = retry("the front did not close on the tree refined for a thin core: meshing again on the first tree", first,
+                 {.once = options.treeless, .report_key = "retried without the thin-core refinement"});
+  if (!code && open.filled)
+    code = retry("the front did not close after the Delaunay fill: meshing again without it", first,
+                 {.fill = false, .once = true, .report_key = "retried without the Delaunay fill"});
+  if (!code)
+    code = retry("short growth did not close the front: the other strategies on the first tree", first,
+                 {.short_growth = false, .report_key = "retried with the other strategies"});
+  if (!code && open.refined)
+    code = retry("the front did not close on the first tree either: the other strategies on the refined tree", options,
+                 {.short_growth = false, .report_key = "retried with the other strategies on the refined tree"});
+  if (!code)
+    code = retry("the front did not close with targets in Delaunay order: meshing again on the first tree with "
+                 "targets best shape first",
+                 first, {.shape_order = true, .last = true, .report_key = "retried with targets best shape first"});
+  PARTET_ASSERT(code.has_value(), "the last attempt left the front open without an error");
+  return *code;
 }
 
 }  // namespace partet
