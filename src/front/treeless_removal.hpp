@@ -113,8 +113,10 @@
 //    of growing (a thin flat cavity against the surface otherwise grows
 //    past kMaxGrownFaces every round and the tree pass rebuilds what it
 //    deleted: rotor r3).
-// The starting state is copied before the first attempt runs. The first
-// strategy that closes the front wins. When none does, the attempt that
+// At most options.starts attempts start from the starting state (1: the
+// first strategy and those going on from it); it is copied before the
+// first attempt runs, unless no attempt can start from it again (one start
+// and rerun_best off). The first strategy that closes the front wins. When none does, the attempt that
 // left the fewest faces (the earliest on ties; an attempt that went on is
 // its whole chain of strategies) is run again from the starting state,
 // unless it was the last (the rounds are deterministic;
