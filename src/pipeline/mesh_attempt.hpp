@@ -14,6 +14,7 @@ namespace partet {
 struct MeshAttempt {
   bool fill = true;          // the Delaunay fill, where the options and the input have it
   bool once = false;         // one tree-less start: short growth, the default going on from a few faces
+                             // (nothing without tree-less removals)
   bool short_growth = true;  // short growth first (false: it failed on this tree and fill already)
   bool shape_order = false;  // targets best shape first
   // On P > 1 ranks, the tree-supported removals on rank 0 alone, as on one

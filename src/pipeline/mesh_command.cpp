@@ -491,11 +491,14 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
       c["offset vertices"] = offset;
       return c;
     });
+    // The same on every rank: each holds the surface (share_surface).
     const bool filled = attempt.fill && options.delaunay_fill && options.stop_after != StopAfter::kTemplates &&
                         s.surface.num_triangles() > kDelaunayFillTriangles;
     if (filled) {
       report.run_step("delaunay fill", [&] {
-        return s.whole ? fill_step(s.initial_front, s.tree, s.core.mesh) : ojson::object();
+        // With the removals on rank 0 the other ranks' fronts go unused.
+        const bool used = s.whole && (root_rank || !attempt.removals_on_root);
+        return used ? fill_step(s.initial_front, s.tree, s.core.mesh) : ojson::object();
       });
     }
     if (options.stop_after == StopAfter::kTemplates) {
@@ -534,9 +537,8 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
       }
       if (front) left = front_left(*front);
       int64_t faces_left = comm.max(static_cast<int64_t>(left.num_triangles()));
-      const bool filled_on_root = comm.max(static_cast<int64_t>(filled)) > 0;  // the surface is rank 0's
       if (faces_left > 0 && !attempt.last && (options.treeless || s.thin_core_refined))
-        throw FrontLeftOpen{s.thin_core_refined, filled_on_root};
+        throw FrontLeftOpen{s.thin_core_refined, filled};
       if (faces_left > 0) {
         if (options.keep_partial) {
           report.run_step("write partial", [&] {

@@ -44,7 +44,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   first.min_core = 0;
   FrontLeftOpen open;
   try {
-    return mesh_once(options, comm, log, {.once = options.treeless});
+    return mesh_once(options, comm, log, {.once = true});
   } catch (const FrontLeftOpen& e) {
     open = e;
   }
@@ -66,7 +66,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
                  options, {.once = true, .report_key = "retried with the tree-supported removals on rank 0"});
   if (!code && open.refined)
     code = retry("the front did not close on the tree refined for a thin core: meshing again on the first tree", first,
-                 {.once = options.treeless, .report_key = "retried without the thin-core refinement"});
+                 {.once = true, .report_key = "retried without the thin-core refinement"});
   if (!code && open.filled)
     code = retry("the front did not close after the Delaunay fill: meshing again without it", first,
                  {.fill = false, .once = true, .report_key = "retried without the Delaunay fill"});
