@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -35,6 +36,10 @@ constexpr double kInvalid = -std::numeric_limits<double>::infinity();
 // first round, 49 in the second, none in the third; lever refined once:
 // 515, 112, 6, 2, none).
 constexpr size_t kMaxRecoveryRounds = 8;
+
+// Steps of one edge's recovery (Recovery::recover): each takes a face or
+// an edge out of the segment's way.
+constexpr int kMaxRecoverySteps = 64;
 
 // The tets around an edge (b, d), its ring vertices ordered so that
 // orient3d(b, d, r_k, r_k+1) > 0.
@@ -209,8 +214,7 @@ class Recovery {
   bool recover(uint32_t a, uint32_t c, uint32_t b, uint32_t d) {
     if (chord_removal(b, d, a, c)) return true;
     uint32_t through[2];
-    int k = crossings(a, c, crossed_, through);
-    if (k < 0) return through[0] != kNoNeighbour && chord_removal(through[0], through[1], a, c);
+    const int k = crossings(a, c, crossed_, through);
     if (k >= 2) {
       // Faces crossed one after the other share an edge (they are two
       // faces of one tet); when all share one, a and c lie on its ring.
@@ -225,20 +229,71 @@ class Recovery {
       }
       if (n == 2 && chord_removal(common[0], common[1], a, c)) return true;
     }
-    // The 2-3 flip of the first face crossed from either end, when valid,
-    // leaves the segment one face fewer to cross: the new tet on that end
-    // and the second crossed face has both.
-    bool from_a = true;
-    while (k > 1) {
-      if (!flip_23(crossed_[0])) {
-        from_a = !from_a;
-        if (crossings(from_a ? a : c, from_a ? c : a, crossed_, through) != k || !flip_23(crossed_[0])) return false;
-      }
-      const int left = crossings(from_a ? a : c, from_a ? c : a, crossed_, through);
-      if (left != k - 1) return false;
-      k = left;
+    // Steps from either end, a first: each takes away what the segment
+    // meets first from that end (step_from), leaving less between a and c.
+    for (int step = 0; step < kMaxRecoverySteps; ++step) {
+      if (!step_from(a, c) && !step_from(c, a)) return false;
+      if (tet_with_edge(a, c) != kNoNeighbour) return true;
     }
-    return k == 1 && flip_23(crossed_[0]);
+    return false;
+  }
+
+  // One step of segment (from, to)'s recovery: where it leaves `from`
+  // through an edge of from's star, that edge's removal with the chord, or
+  // by the fan of its ring from `from`; where it crosses a face first,
+  // advance. False, and no change, when none applies (or the walk meets an
+  // edge or a vertex further on).
+  bool step_from(uint32_t from, uint32_t to) {
+    uint32_t through[2];
+    const int k = crossings(from, to, crossed_, through);
+    if (k > 0) return advance(crossed_[0], from);
+    if (through[0] == kNoNeighbour) return false;
+    if (chord_removal(through[0], through[1], from, to)) return true;
+    if (input_edges_.find(edge_key(through[0], through[1]))) return false;
+    const uint32_t t = tet_with_edge(through[0], through[1]);
+    return t != kNoNeighbour && edge_ring(t, through[0], through[1], ring_) && remove_with_fan(ring_, from);
+  }
+
+  // Takes face `code` (4 t + i), crossed by a segment from t's vertex
+  // `from` = t[i], out of the segment's way: its 2-3 flip when valid, else
+  // the removal of an edge of it (not an input edge) by the fan of its ring
+  // from `from` (remove_with_fan), where the apex across lies beyond that
+  // edge as seen from `from`. Every new tet then has `from`, so the
+  // segment leaves `from` past the tets taken away. False, and no change,
+  // when neither applies.
+  bool advance(uint32_t code, uint32_t from) {
+    if (flip_23(code)) return true;
+    const uint32_t t = code / 4, across = d_.neighbours[code];
+    if (across == kNoNeighbour) return false;
+    const uint32_t w = tet(across / 4)[across % 4];
+    const std::array<uint32_t, 3> f = face_vertices(code);
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t x = f[e], y = f[(e + 1) % 3], z = f[(e + 2) % 3];
+      // w beyond edge xy: not on z's side of plane (from, x, y).
+      if (orient3d(pt(from), pt(x), pt(y), pt(w)) == orient3d(pt(from), pt(x), pt(y), pt(z))) continue;
+      if (input_edges_.find(edge_key(x, y)) || !edge_ring(t, x, y, ring_)) continue;
+      if (remove_with_fan(ring_, from)) return true;
+    }
+    return false;
+  }
+
+  // Replaces the ring's tets by the fan of its polygon from ring vertex a
+  // (triangles (a, r_k, r_k+1)), each triangle coned to b and to d, when
+  // every new tet is positive; false, and no change, otherwise.
+  bool remove_with_fan(const Ring& ring, uint32_t a) {
+    const int n = ring.n;
+    const int start = static_cast<int>(std::find(ring.vertices, ring.vertices + n, a) - ring.vertices);
+    if (start == n || n < 3) return false;
+    std::vector<uint32_t>& made = made_;
+    made.clear();
+    for (int k = 1; k + 1 < n; ++k) {
+      const uint32_t y = ring.vertices[(start + k) % n], z = ring.vertices[(start + k + 1) % n];
+      if (orient3d(pt(a), pt(y), pt(z), pt(ring.d)) <= 0 || orient3d(pt(y), pt(a), pt(z), pt(ring.b)) <= 0)
+        return false;
+      made.insert(made.end(), {a, y, z, ring.d, y, a, z, ring.b});
+    }
+    replace({ring.tets, static_cast<size_t>(n)}, made);
+    return true;
   }
 
   // The faces segment ac crosses, from a, as codes 4 t + i of the tet
@@ -397,6 +452,11 @@ class Recovery {
       }
     const size_t count = made.size() / 4;
     slots_.assign(old.begin(), old.end());
+    surplus_.clear();
+    while (slots_.size() > count) {
+      surplus_.push_back(slots_.back());
+      slots_.pop_back();
+    }
     while (slots_.size() < count) {
       slots_.push_back(static_cast<uint32_t>(d_.num_tets()));
       d_.tets.insert(d_.tets.end(), 4, 0);
@@ -404,7 +464,6 @@ class Recovery {
       seen_.push_back(0);
       flipped_.push_back(0);
     }
-    PARTET_ASSERT(slots_.size() == count, "a recovery makes no fewer tets than it replaces");
     faces_.clear();
     for (size_t k = 0; k < count; ++k) {
       const uint32_t t = slots_[k];
@@ -429,6 +488,32 @@ class Recovery {
       d_.neighbours[faces_[i].code] = o->across;
       if (o->across != kNoNeighbour) d_.neighbours[o->across] = faces_[i].code;
     }
+    // The slots a flip to fewer tets leaves, highest first: each gets the
+    // last tet (so a later, lower one never is the last one moved).
+    std::sort(surplus_.begin(), surplus_.end(), std::greater<>());
+    for (const uint32_t t : surplus_) drop_slot(t);
+  }
+
+  // Removes the unused slot t: the last tet moves into it, its
+  // neighbours' links, its vertices' tets and its flags with it.
+  void drop_slot(uint32_t t) {
+    const uint32_t last = static_cast<uint32_t>(d_.num_tets() - 1);
+    if (t != last) {
+      for (int i = 0; i < 4; ++i) {
+        const uint32_t v = d_.tets[4 * size_t{last} + i];
+        d_.tets[4 * size_t{t} + i] = v;
+        if (vertex_tet_[v] == last) vertex_tet_[v] = t;
+        const uint32_t across = d_.neighbours[4 * size_t{last} + i];
+        d_.neighbours[4 * size_t{t} + i] = across;
+        if (across != kNoNeighbour) d_.neighbours[across] = 4 * t + static_cast<uint32_t>(i);
+      }
+      seen_[t] = seen_[last];
+      flipped_[t] = flipped_[last];
+    }
+    d_.tets.resize(4 * size_t{last});
+    d_.neighbours.resize(4 * size_t{last});
+    seen_.pop_back();
+    flipped_.pop_back();
   }
 
   DelaunayTets& d_;
@@ -439,7 +524,7 @@ class Recovery {
   std::vector<uint32_t> vertex_tet_;  // per vertex, a tet having it
   std::vector<uint32_t> seen_;        // per tet, the stamp of the last search that met it
   uint32_t stamp_ = 0;
-  std::vector<uint32_t> queue_, made_, slots_;
+  std::vector<uint32_t> queue_, made_, slots_, surplus_;
   std::vector<uint8_t> flipped_;  // per tet, whether a flip made it
   std::vector<Outer> outer_;
   std::vector<FaceCode> faces_;

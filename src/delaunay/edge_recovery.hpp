@@ -21,21 +21,30 @@
 //     over the polygon's sub-chains). When one side of the chord has no
 //     such triangulation and holds a single ring vertex x, the 2-3 flip of
 //     the two ring tets on (b, d, x) instead (bd stays);
-//  2. walking segment ac from a through the tets (exact orient3d): when
-//     it leaves a through an edge of a's star, the removal of that edge
-//     with the chord; when it crosses one face, the 2-3 flip of that face;
-//     when the faces it crosses all share an edge, the removal of that
-//     edge with the chord; otherwise 2-3 flips of the first face crossed
-//     from a (or, where that one is not convex, from c), each leaving one
-//     face fewer to cross, down to the last.
-// An edge uv is removed only when it is not an input edge and its ring
-// closes (not on the enclosing tet's faces) within kMaxRecoveryRing tets;
-// a 2-3 flip never takes an input triangle's face. So no flip destroys an
-// input edge or face: every round keeps what the earlier ones recovered,
-// and a round that recovers nothing ends them. A walk that meets an edge
-// or a vertex after its start is not followed. The result is a
-// tetrahedralization of the same points (no longer Delaunay near the
-// recovered edges), every tet positive, adjacency kept. Deterministic.
+//  2. when the faces segment ac crosses all share an edge, the removal of
+//     that edge with the chord;
+//  3. steps from either end e of the segment, a first, at most
+//     kMaxRecoverySteps, until ac is an edge: the walk from e (exact
+//     orient3d) either leaves e through an edge of e's star, which is
+//     removed with the chord when its ring holds both ends, else by the
+//     fan of its ring from e (every new tet has e); or it crosses a face
+//     first, which goes by its 2-3 flip when that is valid, else by the
+//     fan from e of the ring of an edge of it that the apex across lies
+//     beyond, seen from e (a 3-2 flip when the ring has three tets). Each
+//     step leaves e past the tets it took away. (2-3 flips alone, from the
+//     ends, left 178 of the 298 triangles of lever's vertices missing and
+//     236 of the 878 of eight split once; with the fans 141 and 98; femur
+//     refined once in the fill 1,901 -> 780.)
+// Every new tet is positive. An edge uv is removed only when it is not an
+// input edge and its ring closes (not on the enclosing tet's faces) within
+// kMaxRecoveryRing tets, and only uv goes; a 2-3 flip never takes an input
+// triangle's face. So no flip destroys an input edge or face: every round
+// keeps what the earlier ones recovered, and a round that recovers nothing
+// ends them. A walk that meets an edge or a vertex after its start is not
+// followed; the steps taken for an edge that is not recovered in the end
+// stay (valid tets, not Delaunay). The result is a tetrahedralization of
+// the same points (no longer Delaunay near the recovered edges), every tet
+// positive, adjacency kept. Deterministic.
 #pragma once
 
 #include <cstddef>

@@ -51,10 +51,10 @@ bool has_edge(const DelaunayTets& d, uint32_t u, uint32_t w) {
 }
 
 // Recovers the edges of `triangles` among `points`; checks the result and
-// returns the counts.
-EdgeRecoveryCounts recover_and_check(const std::vector<double>& points, const std::vector<uint32_t>& triangles) {
+// returns the counts, and in `left_out` the input triangles still not faces.
+EdgeRecoveryCounts recover_and_check(const std::vector<double>& points, const std::vector<uint32_t>& triangles,
+                                     size_t* left_out = nullptr) {
   DelaunayTets d = delaunay_tetrahedralize(points);
-  const size_t tets_before = d.num_tets();
   const std::set<Triple> before = faces_of(d);
   std::vector<uint8_t> flipped;
   const EdgeRecoveryCounts counts = recover_input_edges(d, triangles, flipped);
@@ -62,17 +62,18 @@ EdgeRecoveryCounts recover_and_check(const std::vector<double>& points, const st
   EXPECT_EQ(flipped.size(), d.num_tets());
   const size_t made = static_cast<size_t>(std::count(flipped.begin(), flipped.end(), 1));
   EXPECT_EQ(made > 0, counts.recovered_edges > 0);
-  EXPECT_GE(d.num_tets(), tets_before);
   const std::set<Triple> after = faces_of(d);
-  size_t missing = 0;
+  size_t missing = 0, left = 0;
   for (size_t s = 0; s < triangles.size() / 3; ++s) {
     const Triple f = sorted(triangles[3 * s], triangles[3 * s + 1], triangles[3 * s + 2]);
     if (before.count(f)) {
       EXPECT_TRUE(after.count(f)) << "input triangle " << s << " was a face and is not";
     }
     missing += !before.count(f);
+    left += !after.count(f);
   }
   EXPECT_EQ(counts.missing_triangles, missing);
+  if (left_out) *left_out = left;
   return counts;
 }
 
@@ -110,15 +111,21 @@ TEST(EdgeRecovery, ABentQuadGetsTheInputDiagonal) {
 }
 
 // The vertices of a CAD part (long needle triangles) and of a body split
-// 1:4 (coplanar quads): many edges come back, none is lost.
+// 1:4 (coplanar quads): many edges come back, none is lost, and most
+// missing triangles become faces. The walks that step past faces and
+// edges which are not convex from the segment's end (the fans) are what
+// bring them: with 2-3 flips alone 178 of lever's 298 and 236 of the
+// refined eight's 878 stayed missing, now 141 and 98.
 TEST(EdgeRecovery, CorpusSurfacesGetEdgesBack) {
   for (const bool refine : {false, true}) {
     const std::string name = refine ? "good/eight.off" : "good/lever.stl";
     SurfaceMesh surface = read_surface_file(test::data_path(name));
     if (refine) surface = refine_midpoints(surface);
-    const EdgeRecoveryCounts n = recover_and_check(surface.xyz, surface.tris);
+    size_t left = 0;
+    const EdgeRecoveryCounts n = recover_and_check(surface.xyz, surface.tris, &left);
     EXPECT_GT(n.missing_triangles, 0u) << name;
     EXPECT_GT(n.recovered_edges, n.missing_triangles / 10) << name;
+    EXPECT_LE(left, n.missing_triangles / (refine ? 5 : 2)) << name;
   }
 }
 
