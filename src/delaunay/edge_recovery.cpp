@@ -139,8 +139,8 @@ class Recovery {
     double best[N][N];
     int split[N][N];
     auto triangle_quality = [&](int lo, int mid, int hi) {
+      if (!cones_positive(ring, s[lo], s[mid], s[hi])) return kInvalid;
       const double *x = pt(s[lo]), *y = pt(s[mid]), *z = pt(s[hi]);
-      if (orient3d(x, y, z, pt(ring.d)) <= 0 || orient3d(y, x, z, pt(ring.b)) <= 0) return kInvalid;
       return std::min(shape_measure(x, y, z, pt(ring.d)), shape_measure(y, x, z, pt(ring.b)));
     };
     auto solve = [&](int first, int last) {
@@ -163,8 +163,7 @@ class Recovery {
     if (!(best[0][m] > kInvalid) || !(best[m][n] > kInvalid))
       return (m == 2 && flip_23(face_between(ring, a, s[1]))) || (n - m == 2 && flip_23(face_between(ring, a, s[m + 1])));
 
-    std::vector<uint32_t>& made = made_;
-    made.clear();
+    made_.clear();
     int stack[2 * N], top = 0;
     for (const int end : {0, m}) {
       stack[top++] = end;
@@ -174,14 +173,25 @@ class Recovery {
       const int hi = stack[--top], lo = stack[--top];
       if (hi - lo < 2) continue;
       const int mid = split[lo][hi];
-      made.insert(made.end(), {s[lo], s[mid], s[hi], ring.d, s[mid], s[lo], s[hi], ring.b});
+      add_cones(ring, s[lo], s[mid], s[hi]);
       stack[top++] = lo;
       stack[top++] = mid;
       stack[top++] = mid;
       stack[top++] = hi;
     }
-    replace({ring.tets, static_cast<size_t>(n)}, made);
+    replace({ring.tets, static_cast<size_t>(n)}, made_);
     return true;
+  }
+
+  // Whether triangle (x, y, z) of the ring's polygon, in ring order, coned
+  // to d and to b gives two positive tets.
+  bool cones_positive(const Ring& ring, uint32_t x, uint32_t y, uint32_t z) const {
+    return orient3d(pt(x), pt(y), pt(z), pt(ring.d)) > 0 && orient3d(pt(y), pt(x), pt(z), pt(ring.b)) > 0;
+  }
+
+  // Appends those two tets to made_.
+  void add_cones(const Ring& ring, uint32_t x, uint32_t y, uint32_t z) {
+    made_.insert(made_.end(), {x, y, z, ring.d, y, x, z, ring.b});
   }
 
   // The 2-3 flip of the two tets on face `code` (4 t + i): with apexes u
@@ -248,10 +258,8 @@ class Recovery {
     const int k = crossings(from, to, crossed_, through);
     if (k > 0) return advance(crossed_[0], from);
     if (through[0] == kNoNeighbour) return false;
-    if (chord_removal(through[0], through[1], from, to)) return true;
-    if (input_edges_.find(edge_key(through[0], through[1]))) return false;
-    const uint32_t t = tet_with_edge(through[0], through[1]);
-    return t != kNoNeighbour && edge_ring(t, through[0], through[1], ring_) && remove_with_fan(ring_, from);
+    return chord_removal(through[0], through[1], from, to) ||
+           fan_removal(through[0], through[1], from, tet_with_edge(through[0], through[1]));
   }
 
   // Takes face `code` (4 t + i), crossed by a segment from t's vertex
@@ -271,8 +279,7 @@ class Recovery {
       const uint32_t x = f[e], y = f[(e + 1) % 3], z = f[(e + 2) % 3];
       // w beyond edge xy: not on z's side of plane (from, x, y).
       if (orient3d(pt(from), pt(x), pt(y), pt(w)) == orient3d(pt(from), pt(x), pt(y), pt(z))) continue;
-      if (input_edges_.find(edge_key(x, y)) || !edge_ring(t, x, y, ring_)) continue;
-      if (remove_with_fan(ring_, from)) return true;
+      if (fan_removal(x, y, from, t)) return true;
     }
     return false;
   }
@@ -284,15 +291,13 @@ class Recovery {
     const int n = ring.n;
     const int start = static_cast<int>(std::find(ring.vertices, ring.vertices + n, a) - ring.vertices);
     if (start == n || n < 3) return false;
-    std::vector<uint32_t>& made = made_;
-    made.clear();
+    made_.clear();
     for (int k = 1; k + 1 < n; ++k) {
       const uint32_t y = ring.vertices[(start + k) % n], z = ring.vertices[(start + k + 1) % n];
-      if (orient3d(pt(a), pt(y), pt(z), pt(ring.d)) <= 0 || orient3d(pt(y), pt(a), pt(z), pt(ring.b)) <= 0)
-        return false;
-      made.insert(made.end(), {a, y, z, ring.d, y, a, z, ring.b});
+      if (!cones_positive(ring, a, y, z)) return false;
+      add_cones(ring, a, y, z);
     }
-    replace({ring.tets, static_cast<size_t>(n)}, made);
+    replace({ring.tets, static_cast<size_t>(n)}, made_);
     return true;
   }
 
@@ -377,6 +382,13 @@ class Recovery {
     const uint32_t* const end = begin + ring_.n;
     if (std::find(begin, end, a) == end || std::find(begin, end, c) == end) return false;
     return remove_with_chord(ring_, a, c);
+  }
+
+  // Removes edge uv, which tet t has, by the fan of its ring from `from`
+  // (remove_with_fan) when uv is not an input edge and its ring closes.
+  bool fan_removal(uint32_t u, uint32_t v, uint32_t from, uint32_t t) {
+    if (input_edges_.find(edge_key(u, v)) || t == kNoNeighbour || !edge_ring(t, u, v, ring_)) return false;
+    return remove_with_fan(ring_, from);
   }
 
   std::array<uint32_t, 3> face_vertices(uint32_t code) const {
