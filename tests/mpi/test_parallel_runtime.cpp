@@ -6,6 +6,7 @@
 
 #include "check/validate.hpp"
 #include "core/error.hpp"
+#include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
 #include "parallel/collective_step.hpp"
 #include "parallel/comm.hpp"
@@ -132,6 +133,22 @@ TEST(MpiRuntime, DistributedWritesJoinToTheWholeMesh) {
   }
   if (comm.rank() == 0) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/cube_" + std::to_string(comm.size() - 1) + ".vtu"));
+  }
+}
+
+// A mesh whole on rank 0 (the other ranks hold nothing) is written as it
+// is: the same bytes as writing it alone, with no merge of parts.
+TEST(MpiRuntime, WholeMeshOnRankZeroIsWrittenAsItIs) {
+  Comm comm = Comm::world();
+  const std::string dir = test::shared_dir(comm, "write_whole");
+  const TetMesh whole = test::cube_tets();
+  const TetMesh part = comm.rank() == 0 ? whole : TetMesh{};
+  for (const char* name : {"/cube.vtu", "/cube.mesh", "/cube.msh"}) {
+    write_distributed_mesh(part, dir + name, {}, comm);
+    if (comm.rank() != 0) continue;
+    const std::string alone = dir + "/alone_" + std::string(name + 1);
+    write_volume_file(whole, alone, {});
+    EXPECT_EQ(read_file_bytes(dir + name), read_file_bytes(alone)) << name;
   }
 }
 
