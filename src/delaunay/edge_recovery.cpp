@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -125,62 +126,96 @@ class Recovery {
   // change, when it has none.
   bool remove_with_chord(const Ring& ring, uint32_t a, uint32_t c) {
     const int n = ring.n;
-    // s: the ring from a, closed by a again; c at position m.
-    uint32_t s[kMaxRecoveryRing + 1];
-    const int start = static_cast<int>(std::find(ring.vertices, ring.vertices + n, a) - ring.vertices);
-    int m = -1;
-    for (int k = 0; k < n; ++k) {
-      s[k] = ring.vertices[(start + k) % n];
-      if (s[k] == c) m = k;
-    }
-    s[n] = a;
+    const int m = ring_from(ring, a, c);
     if (m < 2 || m > n - 2) return false;  // c next to a: (a, c) is already an edge
-    constexpr int N = kMaxRecoveryRing + 1;
-    double best[N][N];
-    int split[N][N];
+    solve_chain(ring, 0, m);
+    solve_chain(ring, m, n);
+    if (!(best_[0][m] > kInvalid) || !(best_[m][n] > kInvalid))
+      return (m == 2 && flip_23(face_between(ring, a, chain_[1]))) ||
+             (n - m == 2 && flip_23(face_between(ring, a, chain_[m + 1])));
+    made_.clear();
+    add_chain(ring, 0, m);
+    add_chain(ring, m, n);
+    replace({ring.tets, static_cast<size_t>(n)}, made_);
+    return true;
+  }
+
+  // Replaces the ring's tets by the best valid triangulation of its
+  // polygon that has the triangle (a, b, c), three of its vertices in ring
+  // order: that triangle coned to the ring's edge ends becomes two tets
+  // sharing face abc. False, and no change, when it has none.
+  bool remove_with_triangle(const Ring& ring, uint32_t a, uint32_t b, uint32_t c) {
+    const int n = ring.n;
+    const int mb = ring_from(ring, a, b), mc = ring_from(ring, a, c);
+    if (!(0 < mb && mb < mc && mc < n) || !cones_positive(ring, a, b, c)) return false;
+    for (const auto& [lo, hi] : {std::pair{0, mb}, std::pair{mb, mc}, std::pair{mc, n}}) {
+      solve_chain(ring, lo, hi);
+      if (!(best_[lo][hi] > kInvalid)) return false;
+    }
+    made_.clear();
+    add_cones(ring, a, b, c);
+    add_chain(ring, 0, mb);
+    add_chain(ring, mb, mc);
+    add_chain(ring, mc, n);
+    replace({ring.tets, static_cast<size_t>(n)}, made_);
+    return true;
+  }
+
+  // chain_: the ring's vertices from a, closed by a again (chain_[n]);
+  // returns the position of v in it (-1 when v is not on the ring).
+  int ring_from(const Ring& ring, uint32_t a, uint32_t v) {
+    const int n = ring.n;
+    const int start = static_cast<int>(std::find(ring.vertices, ring.vertices + n, a) - ring.vertices);
+    int at = -1;
+    for (int k = 0; k < n; ++k) {
+      chain_[k] = ring.vertices[(start + k) % n];
+      if (chain_[k] == v) at = k;
+    }
+    chain_[n] = a;
+    return at;
+  }
+
+  // The best triangulations (the largest worst shape measure of their
+  // cones) of the sub-chains of chain_[first..last], closed by their end
+  // chord, into best_ and split_ (kInvalid: none whose cones are all
+  // positive; a chain of one edge needs no triangle).
+  void solve_chain(const Ring& ring, int first, int last) {
     auto triangle_quality = [&](int lo, int mid, int hi) {
-      if (!cones_positive(ring, s[lo], s[mid], s[hi])) return kInvalid;
-      const double *x = pt(s[lo]), *y = pt(s[mid]), *z = pt(s[hi]);
+      if (!cones_positive(ring, chain_[lo], chain_[mid], chain_[hi])) return kInvalid;
+      const double *x = pt(chain_[lo]), *y = pt(chain_[mid]), *z = pt(chain_[hi]);
       return std::min(shape_measure(x, y, z, pt(ring.d)), shape_measure(y, x, z, pt(ring.b)));
     };
-    auto solve = [&](int first, int last) {
-      for (int len = 1; len <= last - first; ++len)
-        for (int lo = first; lo + len <= last; ++lo) {
-          const int hi = lo + len;
-          best[lo][hi] = len == 1 ? std::numeric_limits<double>::infinity() : kInvalid;
-          split[lo][hi] = -1;
-          for (int mid = lo + 1; mid < hi; ++mid) {
-            const double q = std::min({best[lo][mid], best[mid][hi], triangle_quality(lo, mid, hi)});
-            if (q > best[lo][hi]) {
-              best[lo][hi] = q;
-              split[lo][hi] = mid;
-            }
+    for (int len = 1; len <= last - first; ++len)
+      for (int lo = first; lo + len <= last; ++lo) {
+        const int hi = lo + len;
+        best_[lo][hi] = len == 1 ? std::numeric_limits<double>::infinity() : kInvalid;
+        split_[lo][hi] = -1;
+        for (int mid = lo + 1; mid < hi; ++mid) {
+          const double q = std::min({best_[lo][mid], best_[mid][hi], triangle_quality(lo, mid, hi)});
+          if (q > best_[lo][hi]) {
+            best_[lo][hi] = q;
+            split_[lo][hi] = mid;
           }
         }
-    };
-    solve(0, m);
-    solve(m, n);
-    if (!(best[0][m] > kInvalid) || !(best[m][n] > kInvalid))
-      return (m == 2 && flip_23(face_between(ring, a, s[1]))) || (n - m == 2 && flip_23(face_between(ring, a, s[m + 1])));
+      }
+  }
 
-    made_.clear();
-    int stack[2 * N], top = 0;
-    for (const int end : {0, m}) {
-      stack[top++] = end;
-      stack[top++] = end == 0 ? m : n;
-    }
+  // Appends to made_ the cones of solve_chain's triangulation of
+  // chain_[first..last].
+  void add_chain(const Ring& ring, int first, int last) {
+    int stack[2 * kChain], top = 0;
+    stack[top++] = first;
+    stack[top++] = last;
     while (top > 0) {
       const int hi = stack[--top], lo = stack[--top];
       if (hi - lo < 2) continue;
-      const int mid = split[lo][hi];
-      add_cones(ring, s[lo], s[mid], s[hi]);
+      const int mid = split_[lo][hi];
+      add_cones(ring, chain_[lo], chain_[mid], chain_[hi]);
       stack[top++] = lo;
       stack[top++] = mid;
       stack[top++] = mid;
       stack[top++] = hi;
     }
-    replace({ring.tets, static_cast<size_t>(n)}, made_);
-    return true;
   }
 
   // Whether triangle (x, y, z) of the ring's polygon, in ring order, coned
@@ -246,6 +281,44 @@ class Recovery {
       if (tet_with_edge(a, c) != kNoNeighbour) return true;
     }
     return false;
+  }
+
+  // Makes input triangle abc, whose three edges are edges, a face: an
+  // edge pq opposite one of its edges uv in a tet of uv's ring, not an
+  // input edge, whose ring holds a, b and c, is removed by the best valid
+  // triangulation of its ring with the triangle (remove_with_triangle).
+  // False, and no change, when none is found.
+  bool recover_face(uint32_t a, uint32_t b, uint32_t c) {
+    const uint32_t corners[3] = {a, b, c};
+    Ring around;
+    for (int e = 0; e < 3; ++e) {
+      const uint32_t u = corners[e], v = corners[(e + 1) % 3];
+      const uint32_t t = tet_with_edge(u, v);
+      if (t == kNoNeighbour || !edge_ring(t, u, v, around)) continue;
+      for (int k = 0; k < around.n; ++k) {
+        const uint32_t p = around.vertices[k], q = around.vertices[(k + 1) % around.n];
+        if (input_edges_.find(edge_key(p, q))) continue;
+        const uint32_t with_pq = tet_with_edge(p, q);
+        if (with_pq == kNoNeighbour || !edge_ring(with_pq, p, q, ring_)) continue;
+        const uint32_t* const begin = ring_.vertices;
+        const uint32_t* const end = begin + ring_.n;
+        const auto at = [&](uint32_t x) { return std::find(begin, end, x) - begin; };
+        const auto pa = at(a), pb = at(b), pc = at(c);
+        if (pa == ring_.n || pb == ring_.n || pc == ring_.n) continue;
+        // a, b and c in ring order from a.
+        const bool forward = (pb - pa + ring_.n) % ring_.n < (pc - pa + ring_.n) % ring_.n;
+        if (remove_with_triangle(ring_, a, forward ? b : c, forward ? c : b)) return true;
+      }
+    }
+    return false;
+  }
+
+  // Whether triangle abc is a face: c on the ring of edge ab.
+  bool has_face(uint32_t a, uint32_t b, uint32_t c) {
+    const uint32_t t = tet_with_edge(a, b);
+    Ring around;
+    if (t == kNoNeighbour || !edge_ring(t, a, b, around)) return false;
+    return std::find(around.vertices, around.vertices + around.n, c) != around.vertices + around.n;
   }
 
   // One step of segment (from, to)'s recovery: where it leaves `from`
@@ -528,6 +601,8 @@ class Recovery {
     flipped_.pop_back();
   }
 
+  static constexpr int kChain = kMaxRecoveryRing + 1;
+
   DelaunayTets& d_;
   const EdgeMap& input_edges_;
   const FaceMap& input_faces_;
@@ -540,6 +615,9 @@ class Recovery {
   std::vector<uint8_t> flipped_;  // per tet, whether a flip made it
   std::vector<Outer> outer_;
   std::vector<FaceCode> faces_;
+  uint32_t chain_[kChain] = {};
+  double best_[kChain][kChain] = {};
+  int split_[kChain][kChain] = {};
 };
 
 }  // namespace
@@ -604,6 +682,15 @@ EdgeRecoveryCounts recover_input_edges(DelaunayTets& d, std::span<const uint32_t
       }
     }
     candidates.swap(later);
+  }
+  // Then the triangles still missing whose three edges are there.
+  for (size_t s = 0; s < num_triangles; ++s) {
+    if (present[s]) continue;
+    const uint32_t* f = &triangles[3 * s];
+    if (recovery.tet_with_edge(f[0], f[1]) == kNoNeighbour || recovery.tet_with_edge(f[1], f[2]) == kNoNeighbour ||
+        recovery.tet_with_edge(f[2], f[0]) == kNoNeighbour || recovery.has_face(f[0], f[1], f[2]))
+      continue;
+    counts.recovered_faces += recovery.recover_face(f[0], f[1], f[2]);
   }
   flipped = recovery.take_flipped();
   return counts;

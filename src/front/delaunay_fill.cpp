@@ -50,9 +50,10 @@ class Fill {
     counts_.walk_steps = d_.walk_steps;
     counts_.cavity_tets = d_.cavity_tets;
     std::vector<uint8_t> flipped;
-    counts_.recovered_edges =
-        recover_input_edges(d_, std::span<const uint32_t>(front_.faces.data(), 3 * front_.surface_faces), flipped)
-            .recovered_edges;
+    const EdgeRecoveryCounts recovery =
+        recover_input_edges(d_, std::span<const uint32_t>(front_.faces.data(), 3 * front_.surface_faces), flipped);
+    counts_.recovered_edges = recovery.recovered_edges;
+    counts_.recovered_faces = recovery.recovered_faces;
     const size_t nt = d_.num_tets();
     removed_.assign(nt, 0);
     walls_.assign(nt, 0);

@@ -62,6 +62,7 @@ constexpr size_t kDelaunayFillTriangles = 1000;
 struct DelaunayFillCounts {
   size_t delaunay_tets = 0;       // finite tets of the tetrahedralization
   size_t recovered_edges = 0;     // input edges made by edge removals (edge_recovery.hpp)
+  size_t recovered_faces = 0;     // input triangles made faces by edge removals with them (edge_recovery.hpp)
   size_t missing_triangles = 0;   // input triangles that are not faces after them
   size_t removed_tets = 0;        // tets meeting one of them, and the flat flipped ones (step 2)
   size_t kept_tets = 0;

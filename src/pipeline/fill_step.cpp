@@ -10,6 +10,7 @@ ojson fill_step(InitialFront& front, const LinearOctree& tree, TetMesh& core) {
   ojson c;
   c["delaunay tets"] = n.delaunay_tets;
   c["recovered edges"] = n.recovered_edges;
+  c["recovered faces"] = n.recovered_faces;
   c["missing triangles"] = n.missing_triangles;
   c["removed tets"] = n.removed_tets;
   c["kept tets"] = n.kept_tets;

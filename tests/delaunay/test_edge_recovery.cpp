@@ -1,5 +1,6 @@
 // recover_input_edges (delaunay/edge_recovery.hpp): a flat quad whose
-// other diagonal is Delaunay, a bent one, and the vertices of corpus
+// other diagonal is Delaunay, a bent one, a triangle an edge crosses, and
+// the vertices of corpus
 // surfaces (a CAD part, a refined body). After the recovery every tet is
 // positive, faces pair up with their neighbours, the tets still fill the
 // enclosing tet, every input triangle that was a face still is, the
@@ -61,7 +62,7 @@ EdgeRecoveryCounts recover_and_check(const std::vector<double>& points, const st
   expect_tetrahedralization(d);
   EXPECT_EQ(flipped.size(), d.num_tets());
   const size_t made = static_cast<size_t>(std::count(flipped.begin(), flipped.end(), 1));
-  EXPECT_EQ(made > 0, counts.recovered_edges > 0);
+  EXPECT_EQ(made > 0, counts.recovered_edges + counts.recovered_faces > 0);
   const std::set<Triple> after = faces_of(d);
   size_t missing = 0, left = 0;
   for (size_t s = 0; s < triangles.size() / 3; ++s) {
@@ -93,6 +94,27 @@ TEST(EdgeRecovery, AFlatQuadGetsTheInputDiagonal) {
   const std::set<Triple> faces = faces_of(d);
   EXPECT_TRUE(faces.count(sorted(0, 1, 2)) && faces.count(sorted(0, 2, 3)));
   recover_and_check(points, triangles);
+}
+
+// A wide triangle abc in the plane z = 0 with p just above its middle and
+// q just below: the Delaunay tets are the three around pq, which crosses
+// abc; abc's edges are all there and the face is not. The facet step's
+// 3-2 flip makes it: tets abcp and abcq.
+TEST(EdgeRecovery, ATriangleCrossedByAnEdgeBecomesAFace) {
+  const std::vector<double> points = {-2, -1, 0, 2, -1, 0, 0, 2, 0, 0.1, 0, 0.3, -0.1, 0.1, -0.3};
+  const std::vector<uint32_t> triangles = {0, 1, 2};
+  const DelaunayTets start = delaunay_tetrahedralize(points);
+  ASSERT_TRUE(has_edge(start, 3, 4));
+  ASSERT_FALSE(faces_of(start).count(sorted(0, 1, 2)));
+  size_t left = 1;
+  const EdgeRecoveryCounts n = recover_and_check(points, triangles, &left);
+  EXPECT_EQ(n.recovered_edges, 0u);
+  EXPECT_EQ(n.recovered_faces, 1u);
+  EXPECT_EQ(left, 0u);
+  DelaunayTets d = delaunay_tetrahedralize(points);
+  std::vector<uint8_t> flipped;
+  recover_input_edges(d, triangles, flipped);
+  EXPECT_FALSE(has_edge(d, 3, 4));
 }
 
 // The same quad bent along ac (b and d raised): ac and bd are skew, and a
