@@ -141,13 +141,20 @@ class Recovery {
   }
 
   // Replaces the ring's tets by the best valid triangulation of its
-  // polygon that has the triangle (a, b, c), three of its vertices in ring
-  // order: that triangle coned to the ring's edge ends becomes two tets
-  // sharing face abc. False, and no change, when it has none.
+  // polygon that has the triangle (a, b, c) (taken in ring order): that
+  // triangle coned to the ring's edge ends becomes two tets sharing face
+  // abc. False, and no change, when a, b or c is not on the ring or there
+  // is no such triangulation.
   bool remove_with_triangle(const Ring& ring, uint32_t a, uint32_t b, uint32_t c) {
     const int n = ring.n;
-    const int mb = ring_from(ring, a, b), mc = ring_from(ring, a, c);
-    if (!(0 < mb && mb < mc && mc < n) || !cones_positive(ring, a, b, c)) return false;
+    int mb = ring_from(ring, a, b);
+    int mc = static_cast<int>(std::find(chain_, chain_ + n, c) - chain_);
+    if (mb < 0 || mc == n) return false;
+    if (mb > mc) {
+      std::swap(mb, mc);
+      std::swap(b, c);
+    }
+    if (!cones_positive(ring, a, b, c)) return false;
     for (const auto& [lo, hi] : {std::pair{0, mb}, std::pair{mb, mc}, std::pair{mc, n}}) {
       solve_chain(ring, lo, hi);
       if (!(best_[lo][hi] > kInvalid)) return false;
@@ -162,10 +169,11 @@ class Recovery {
   }
 
   // chain_: the ring's vertices from a, closed by a again (chain_[n]);
-  // returns the position of v in it (-1 when v is not on the ring).
+  // returns the position of v in it (-1 when v or a is not on the ring).
   int ring_from(const Ring& ring, uint32_t a, uint32_t v) {
     const int n = ring.n;
     const int start = static_cast<int>(std::find(ring.vertices, ring.vertices + n, a) - ring.vertices);
+    if (start == n) return -1;
     int at = -1;
     for (int k = 0; k < n; ++k) {
       chain_[k] = ring.vertices[(start + k) % n];
@@ -283,42 +291,35 @@ class Recovery {
     return false;
   }
 
-  // Makes input triangle abc, whose three edges are edges, a face: an
-  // edge pq opposite one of its edges uv in a tet of uv's ring, not an
-  // input edge, whose ring holds a, b and c, is removed by the best valid
-  // triangulation of its ring with the triangle (remove_with_triangle).
-  // False, and no change, when none is found.
+  // Makes input triangle abc a face when its three edges are edges and it
+  // is not one yet: an edge pq opposite one of its edges uv in a tet of
+  // uv's ring, not an input edge, whose ring holds a, b and c, is removed
+  // by the best valid triangulation of its ring with the triangle
+  // (remove_with_triangle). False, and no change, otherwise.
   bool recover_face(uint32_t a, uint32_t b, uint32_t c) {
     const uint32_t corners[3] = {a, b, c};
-    Ring around;
+    Ring around[3];
+    bool closed[3];
     for (int e = 0; e < 3; ++e) {
-      const uint32_t u = corners[e], v = corners[(e + 1) % 3];
+      const uint32_t u = corners[e], v = corners[(e + 1) % 3], w = corners[(e + 2) % 3];
       const uint32_t t = tet_with_edge(u, v);
-      if (t == kNoNeighbour || !edge_ring(t, u, v, around)) continue;
-      for (int k = 0; k < around.n; ++k) {
-        const uint32_t p = around.vertices[k], q = around.vertices[(k + 1) % around.n];
+      if (t == kNoNeighbour) return false;
+      closed[e] = edge_ring(t, u, v, around[e]);
+      if (closed[e] && std::find(around[e].vertices, around[e].vertices + around[e].n, w) !=
+                           around[e].vertices + around[e].n)
+        return false;  // abc is a face already
+    }
+    for (int e = 0; e < 3; ++e) {
+      if (!closed[e]) continue;
+      for (int k = 0; k < around[e].n; ++k) {
+        const uint32_t p = around[e].vertices[k], q = around[e].vertices[(k + 1) % around[e].n];
         if (input_edges_.find(edge_key(p, q))) continue;
         const uint32_t with_pq = tet_with_edge(p, q);
-        if (with_pq == kNoNeighbour || !edge_ring(with_pq, p, q, ring_)) continue;
-        const uint32_t* const begin = ring_.vertices;
-        const uint32_t* const end = begin + ring_.n;
-        const auto at = [&](uint32_t x) { return std::find(begin, end, x) - begin; };
-        const auto pa = at(a), pb = at(b), pc = at(c);
-        if (pa == ring_.n || pb == ring_.n || pc == ring_.n) continue;
-        // a, b and c in ring order from a.
-        const bool forward = (pb - pa + ring_.n) % ring_.n < (pc - pa + ring_.n) % ring_.n;
-        if (remove_with_triangle(ring_, a, forward ? b : c, forward ? c : b)) return true;
+        if (with_pq != kNoNeighbour && edge_ring(with_pq, p, q, ring_) && remove_with_triangle(ring_, a, b, c))
+          return true;
       }
     }
     return false;
-  }
-
-  // Whether triangle abc is a face: c on the ring of edge ab.
-  bool has_face(uint32_t a, uint32_t b, uint32_t c) {
-    const uint32_t t = tet_with_edge(a, b);
-    Ring around;
-    if (t == kNoNeighbour || !edge_ring(t, a, b, around)) return false;
-    return std::find(around.vertices, around.vertices + around.n, c) != around.vertices + around.n;
   }
 
   // One step of segment (from, to)'s recovery: where it leaves `from`
@@ -685,12 +686,8 @@ EdgeRecoveryCounts recover_input_edges(DelaunayTets& d, std::span<const uint32_t
   }
   // Then the triangles still missing whose three edges are there.
   for (size_t s = 0; s < num_triangles; ++s) {
-    if (present[s]) continue;
     const uint32_t* f = &triangles[3 * s];
-    if (recovery.tet_with_edge(f[0], f[1]) == kNoNeighbour || recovery.tet_with_edge(f[1], f[2]) == kNoNeighbour ||
-        recovery.tet_with_edge(f[2], f[0]) == kNoNeighbour || recovery.has_face(f[0], f[1], f[2]))
-      continue;
-    counts.recovered_faces += recovery.recover_face(f[0], f[1], f[2]);
+    if (!present[s]) counts.recovered_faces += recovery.recover_face(f[0], f[1], f[2]);
   }
   flipped = recovery.take_flipped();
   return counts;
