@@ -60,8 +60,9 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
       ->type_name("C")->capture_default_str();
   std::string partitioner = "mrob";
   app.add_option("--partitioner", partitioner,
-                 "How the boundary octants are split between ranks: recursive bisection along the coordinate "
-                 "axes in turn (rob), the axis of inertia (rib), or the coordinate axis closest to it (mrob)")
+                 "How the boundary octants are split between ranks (with --tree-removals-on-ranks): recursive "
+                 "bisection along the coordinate axes in turn (rob), the axis of inertia (rib), or the "
+                 "coordinate axis closest to it (mrob)")
       ->check(CLI::IsMember({"rob", "rib", "mrob"}))->type_name("METHOD")->capture_default_str();
   std::string stop;
   app.add_option("--stop-after", stop,
@@ -86,10 +87,14 @@ int mesh_main(int argc, char** argv, const partet::Comm& comm) {
   app.add_flag("--no-treeless", no_treeless,
                "Skip the tree-less face removals (new vertices, tet deletion): what the tree-supported removals "
                "leave is reported as an unfinished front (exit 3); for diagnosis");
+  app.add_flag("--tree-removals-on-ranks", o.tree_removals_on_ranks,
+               "On several ranks, partition the boundary octants and make the tree-supported face removals on "
+               "every rank, each on its own leaves, in rounds over the interfaces (the paper's steps 3-9); by "
+               "default rank 0 makes them alone after the Delaunay fill, which measured faster on 2 ranks");
   app.add_flag("--treeless-on-ranks", o.treeless_on_ranks,
                "On several ranks, run the tree-less face removals on every rank in rounds before rank 0 "
-               "finishes (the paper's step 10); by default rank 0 makes them alone, which measured faster "
-               "on 2 ranks");
+               "finishes (the paper's step 10; implies --tree-removals-on-ranks); by default rank 0 makes "
+               "them alone, which measured faster on 2 ranks");
   app.add_flag("--keep-partial", o.keep_partial,
                "When meshing cannot finish (exit 3), write the tets made to OUTPUT and the front left to "
                "OUTPUT's stem + .front.off");

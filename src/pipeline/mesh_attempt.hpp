@@ -18,9 +18,12 @@ struct MeshAttempt {
   bool short_growth = true;  // short growth first (false: it failed on this tree and fill already)
   bool shape_order = false;  // targets best shape first
   // On P > 1 ranks, the tree-supported removals on rank 0 alone, as on one
-  // rank (tree_removal_step.hpp), so that the tree-less removals get one
-  // rank's front: the retries (the ranks' front for stress seed 5193
-  // without the fill left short growth 1,078 faces; one rank's closes).
+  // rank (tree_removal_step.hpp), with no boundary partition and the tree
+  // and core gathered on rank 0 only: every attempt unless the options put
+  // the removals on the ranks (MeshOptions::removals_on_ranks), and every
+  // retry, so that the tree-less removals get one rank's front (the ranks'
+  // front for stress seed 5193 without the fill left short growth 1,078
+  // faces; one rank's closes).
   bool removals_on_root = false;
   bool last = false;         // faces left end the run (exit 3); so do they without tree-less removals
                              // on a tree not refined for a thin core

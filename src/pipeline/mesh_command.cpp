@@ -1,11 +1,12 @@
 // mesh_once: the pipeline of DESIGN.md, one report step per stage: read and
 // diagnose the surface, build the octree (sizes, points, triangles, 2:1
 // balance), classify leaves, make the interior set manifold (demoting
-// leaves to too close), template the interior, on P > 1 ranks partition
-// the boundary leaves (and gather the tree and core on every rank), make
-// the initial front.
-// Then tree-supported face removals (on P > 1 ranks each rank removes the
-// faces of its own leaves and rank 0 finishes: tree_removal_step.hpp) and,
+// leaves to too close), template the interior, on P > 1 ranks gather the
+// tree and core on rank 0 (with the removals on the ranks: partition the
+// boundary leaves and gather them on every rank), make the initial front.
+// Then tree-supported face removals (rank 0's; on the ranks, each rank
+// removes the faces of its own leaves and rank 0 finishes:
+// tree_removal_step.hpp) and,
 // for the faces they leave, face removals with new vertices (rank 0); a
 // front left after those exits 3 (naming where); --stop-after templates
 // writes the templated core and exits 0. Then quality optimization, on the
@@ -435,15 +436,20 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
       c["leaves"] = s.core.leaves_templated;
       return c;
     });
-    if (distributed && options.stop_after == StopAfter::kNone) {
+    // The boundary partition is for the removals on the ranks; when rank 0
+    // makes them, the tree and core are gathered on it alone.
+    const bool on_ranks = options.stop_after == StopAfter::kNone && !attempt.removals_on_root;
+    if (distributed && on_ranks) {
       report.run_step("partition boundary", [&] {
         return partition_boundary_step(comm, s.view, s.part, s.root, s.surface, options.partitioner, s.boundary);
       });
     }
     if (distributed && gather) {
-      // Every rank works on a copy of the whole front in the face removals;
-      // for the templates' front alone (--front-out) rank 0 needs them.
-      const bool everywhere = options.stop_after == StopAfter::kNone;
+      // With the removals on the ranks every rank works on a copy of the
+      // whole front (the tree-less ones on the ranks take rank 0's state,
+      // which needs the tree and the initial front, in every attempt); else
+      // (and for the templates' front alone, --front-out) rank 0 needs them.
+      const bool everywhere = options.stop_after == StopAfter::kNone && (on_ranks || options.treeless_on_ranks);
       report.run_step(everywhere ? "gather tree and core" : "gather on rank 0", [&] {
         gather_tree_and_core(comm, s.view, s.part, s.tree, s.core, everywhere);
         s.whole = root_rank || everywhere;

@@ -36,10 +36,19 @@ struct MeshOptions {
   bool offset_vertices = true;  // --no-offset-vertices: none offset inward from the surface (offset_vertices.hpp)
   bool delaunay_fill = true;  // --no-delaunay-fill: the face removals fill the whole gap (delaunay_fill.hpp)
   bool treeless = true;       // --no-treeless: stop after the tree-supported removals
+  // --tree-removals-on-ranks: on P > 1 ranks the boundary leaves are
+  // partitioned and every rank makes the tree-supported removals of its own
+  // leaves in rounds (tree_removal_step.hpp); else rank 0 makes them alone
+  // and the tree and core are gathered on rank 0 only.
+  bool tree_removals_on_ranks = false;
   // --treeless-on-ranks: on P > 1 ranks the tree-less removals run on every
   // rank in rounds before rank 0 finishes (treeless_step.hpp); else rank 0
-  // makes them alone.
+  // makes them alone. They start from every rank's copy of the front, so
+  // the tree-supported removals run on the ranks too.
   bool treeless_on_ranks = false;
+
+  // Whether the face removals run on the ranks (either option above).
+  bool removals_on_ranks() const { return tree_removals_on_ranks || treeless_on_ranks; }
   bool keep_partial = false;  // --keep-partial: on exit 3, write the tets made and the front left
   bool ascii = false;     // --ascii: text Gmsh output
   bool quiet = false;     // --quiet: errors only

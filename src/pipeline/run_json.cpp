@@ -34,6 +34,7 @@ ojson options_json(const MeshOptions& o) {
   j["offset_vertices"] = o.offset_vertices;
   j["delaunay_fill"] = o.delaunay_fill;
   j["treeless"] = o.treeless;
+  j["tree_removals_on_ranks"] = o.tree_removals_on_ranks;
   j["treeless_on_ranks"] = o.treeless_on_ranks;
   j["optimize"] = o.optimize_passes;
   j["quality_target"] = o.quality_target;

@@ -20,8 +20,9 @@ namespace partet {
 // the core does. So:
 //  1. the tree as built (refined for a thin core where it needs it), with
 //     the fill, short growth only (the default going on from a few faces:
-//     every corpus input closes here); on P > 1 ranks, when that fails,
-//     the same with the tree-supported removals on rank 0 alone;
+//     every corpus input closes here); on P > 1 ranks the tree-supported
+//     removals on rank 0 alone, unless the options put them on the ranks,
+//     and then, when that fails, the same on rank 0 alone;
 //  2. when that tree was refined, the first tree the same way;
 //  3. the first tree without the fill (where the fill ran), the same way;
 //  4. the first tree with the fill, the default and the rescue strategies;
@@ -44,7 +45,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
   first.min_core = 0;
   FrontLeftOpen open;
   try {
-    return mesh_once(options, comm, log, {.once = true});
+    return mesh_once(options, comm, log, {.once = true, .removals_on_root = !options.removals_on_ranks()});
   } catch (const FrontLeftOpen& e) {
     open = e;
   }
@@ -60,7 +61,7 @@ int run_mesh(const MeshOptions& options, const Comm& comm, const Log& log) {
     }
   };
   std::optional<int> code;
-  if (comm.size() > 1 && options.treeless)
+  if (comm.size() > 1 && options.treeless && options.removals_on_ranks())
     code = retry("the front did not close after the face removals on the ranks: meshing again with rank 0 making "
                  "them, as one rank does",
                  options, {.once = true, .report_key = "retried with the tree-supported removals on rank 0"});

@@ -19,10 +19,12 @@ log=$(run "$data/good/cube.off" -o "$out/c.pvtu"); code=$?
 log=$("$partet" check "$out/c.pvtu" --surface "$data/good/cube.off" 2>&1); code=$?
 [[ $code -eq 0 ]] || { echo "the cube mesh is not valid"; echo "$log"; exit 1; }
 
-# Every partitioner of the boundary leaves gives a valid mesh; the report
-# names it and, on several ranks, balances the front faces.
+# Every partitioner of the boundary leaves (with the removals on the ranks)
+# gives a valid mesh; the report names it and, on several ranks, balances
+# the front faces.
 for method in rib rob; do
-  log=$(run "$data/good/eight.off" -o "$out/e.pvtu" --partitioner "$method" --report "$out/e.json"); code=$?
+  log=$(run "$data/good/eight.off" -o "$out/e.pvtu" --partitioner "$method" --tree-removals-on-ranks \
+    --report "$out/e.json"); code=$?
   [[ $code -eq 0 ]] || { echo "eight.off --partitioner $method: exit $code"; echo "$log"; exit 1; }
   log=$("$partet" check "$out/e.pvtu" --surface "$data/good/eight.off" 2>&1); code=$?
   [[ $code -eq 0 ]] || { echo "eight.off --partitioner $method: the mesh is not valid"; echo "$log"; exit 1; }
@@ -70,13 +72,35 @@ for factor in 1 0.5; do
     { echo "x$factor: partet check differs between the $np pieces and the one-rank core"; exit 1; }
 done
 
-# Past kDelaunayFillTriangles the gap is filled first, on every rank alike;
-# the removals close what it leaves in rounds over the ranks.
-log=$(run "$data/good/spool.off" -o "$out/s.vtu" --report "$out/s.json"); code=$?
+# Past kDelaunayFillTriangles the gap is filled first; with the removals on
+# the ranks every rank fills it alike and the removals close what it leaves
+# in rounds over the ranks.
+log=$(run "$data/good/spool.off" -o "$out/s.vtu" --tree-removals-on-ranks --report "$out/s.json"); code=$?
 [[ $code -eq 0 ]] || { echo "spool.off: exit $code"; echo "$log"; exit 1; }
 grep -q '"delaunay fill"' "$out/s.json" || { echo "spool.off: no Delaunay fill in the report"; exit 1; }
 log=$("$partet" check "$out/s.vtu" --surface "$data/good/spool.off" 2>&1); code=$?
 [[ $code -eq 0 ]] || { echo "the spool mesh is not valid"; echo "$log"; exit 1; }
+if [[ $np -gt 1 ]]; then
+  grep -q '"partition boundary"' "$out/s.json" || { echo "spool.off on the ranks: no boundary partition"; exit 1; }
+  grep -q '"tets per rank"' "$out/s.json" || { echo "spool.off on the ranks: no removals per rank"; exit 1; }
+fi
+
+# By default rank 0 fills the gap and makes the face removals after the
+# ranks' octree and templates (gathered on it alone, no boundary
+# partition): the mesh before the optimizer is the one-rank mesh, byte for
+# byte, and the optimized one is valid.
+"$partet" "$data/good/spool.off" -o "$out/one.mesh" --no-optimize -q || { echo "one-rank spool failed"; exit 1; }
+log=$(run "$data/good/spool.off" -o "$out/np.mesh" --no-optimize --report "$out/np.json"); code=$?
+[[ $code -eq 0 ]] || { echo "spool.off --no-optimize: exit $code"; echo "$log"; exit 1; }
+cmp -s "$out/one.mesh" "$out/np.mesh" || { echo "spool.off: the mesh of $np ranks is not the one-rank mesh"; exit 1; }
+if [[ $np -gt 1 ]]; then
+  grep -q '"gather on rank 0"' "$out/np.json" || { echo "spool.off: the tree was not gathered on rank 0"; exit 1; }
+  grep -q '"partition boundary"' "$out/np.json" && { echo "spool.off: a boundary partition by default"; exit 1; }
+fi
+log=$(run "$data/good/spool.off" -o "$out/d.pvtu"); code=$?
+[[ $code -eq 0 ]] || { echo "spool.off by default: exit $code"; echo "$log"; exit 1; }
+log=$("$partet" check "$out/d.pvtu" --surface "$data/good/spool.off" 2>&1); code=$?
+[[ $code -eq 0 ]] || { echo "the default spool mesh is not valid"; echo "$log"; exit 1; }
 
 log=$(run --version); code=$?
 [[ $code -eq 0 ]] || { echo "--version: exit $code"; exit 1; }

@@ -1,6 +1,7 @@
-// The face removals on 1, 2 and 4 ranks. Tree-supported (pipeline step 4 on
-// every rank's copy of the front, rounds on the interfaces, the rest on
-// rank 0; without the Delaunay fill, so that they fill the whole gap): the
+// The face removals on 1, 2 and 4 ranks (--tree-removals-on-ranks).
+// Tree-supported (pipeline step 4 on every rank's copy of the front, rounds
+// on the interfaces, the rest on rank 0; without the Delaunay fill, so that
+// they fill the whole gap): the
 // finished mesh is valid against the surface; on P > 1 ranks
 // some faces waited because their neighbourhood reached another rank's
 // leaves, and the tets counted are the ranks' and rank 0's finishing ones;
@@ -53,6 +54,7 @@ TEST_P(DistributedRemovals, EveryRankMakesTetsAndTheMeshIsValid) {
   // The removals fill the whole gap: with the Delaunay fill and its edge
   // recovery, sphere966 leaves them 28 faces, too few for every rank.
   o.delaunay_fill = false;
+  o.tree_removals_on_ranks = true;
   ASSERT_EQ(run_mesh(o, comm, log), kExitOk);
   if (comm.rank() != 0) return;
   const SurfaceMesh surface = read_surface_file(o.input);
