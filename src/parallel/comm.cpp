@@ -2,8 +2,10 @@
 #include "parallel/comm.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 #include "core/error.hpp"
 
@@ -53,6 +55,18 @@ Comm Comm::world() { return Comm(MPI_COMM_WORLD); }
 void Comm::barrier() const {
   if (serial_) return;
   check_mpi(MPI_Barrier(comm_), "MPI_Barrier");
+}
+
+void Comm::idle_barrier() const {
+  if (serial_ || size_ == 1) return;
+  MPI_Request request;
+  check_mpi(MPI_Ibarrier(comm_, &request), "MPI_Ibarrier");
+  int done = 0;
+  for (long pause = 1;; pause = std::min(2 * pause, kIdlePauseMicros)) {
+    check_mpi(MPI_Test(&request, &done, MPI_STATUS_IGNORE), "MPI_Test");
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::microseconds(pause));
+  }
 }
 
 int64_t Comm::max(int64_t v) const {

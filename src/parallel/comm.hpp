@@ -25,6 +25,9 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
 };
 
+// The longest pause between tests of Comm::idle_barrier, in microseconds.
+inline constexpr long kIdlePauseMicros = 500;
+
 class Comm {
  public:
   explicit Comm(MPI_Comm comm);
@@ -36,6 +39,10 @@ class Comm {
   MPI_Comm raw() const { return comm_; }
 
   void barrier() const;
+  // A barrier whose waiting ranks sleep (MPI_Ibarrier tested with growing
+  // pauses, up to kIdlePauseMicros) instead of spinning in MPI's progress
+  // loop: for the ends of steps where some ranks wait while others work.
+  void idle_barrier() const;
   int64_t max(int64_t v) const;
   int64_t sum(int64_t v) const;
   double max(double v) const;

@@ -116,6 +116,7 @@ OptimizeStats optimize_band(const Comm& comm, TetMesh& mesh, const std::vector<i
   }
   MeshPart own = scatter_parts(comm, shares);
   const OptimizeStats mine = own.mesh.num_tets() > 0 ? optimize_mesh(own.mesh, band, &own.on_cut) : OptimizeStats{};
+  comm.idle_barrier();
   const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
   OptimizeStats total = sum_over_ranks(comm, mine);
   if (!root) return total;
@@ -157,7 +158,9 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
   part_options.set_aside_stuck_on_frozen = true;
   const OptimizeStats mine =
       own.mesh.num_tets() > 0 ? optimize_mesh(own.mesh, part_options, &own.on_cut) : OptimizeStats{};
-  out.part_seconds = comm.all_gather(clock.wall() - part_start);
+  const double part_seconds = clock.wall() - part_start;
+  comm.idle_barrier();  // the ranks done first sleep until the last part is optimized
+  out.part_seconds = comm.all_gather(part_seconds);
   const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
   out.totals = sum_over_ranks(comm, mine);
   out.totals.before = before;

@@ -23,6 +23,8 @@ std::vector<int32_t> partition_tets(const Comm& comm, const TetMesh& mesh) {
       centroids.push_back(0.25 * sum);
     }
   const std::vector<double> weight(mesh.num_tets(), 1.0);
+  // One rank often holds every tet: the others sleep meanwhile.
+  comm.idle_barrier();
   return partition_points(comm, centroids.data(), weight.data(), mesh.num_tets(), BisectionMethod::kRib)
       .destination;
 }
@@ -37,6 +39,7 @@ MeshPart scatter_parts(const Comm& comm, const std::vector<MeshPart>& parts) {
     send_bytes[r] = static_cast<int64_t>(bytes.size() + parts[r].on_cut.size());
   }
   std::vector<int64_t> recv_bytes;
+  comm.idle_barrier();  // the ranks with no part to send sleep while rank 0 writes them
   const std::vector<char> recv = comm.all_to_all(send, send_bytes, recv_bytes);
   MeshPart own;
   own.mesh = deserialize_part(std::string(recv.begin(), recv.end()));

@@ -6,6 +6,7 @@
 
 #include "check/validate.hpp"
 #include "core/error.hpp"
+#include "core/timer.hpp"
 #include "io/file_bytes.hpp"
 #include "io/mesh_file.hpp"
 #include "parallel/collective_step.hpp"
@@ -38,6 +39,23 @@ TEST(MpiRuntime, Collectives) {
   } else {
     EXPECT_TRUE(g.empty());
   }
+}
+
+// While rank 0 works alone for 0.3 s, the others wait in idle_barrier
+// sleeping: most of that wall time, a small part of it on the CPU (a plain
+// MPI_Barrier spins, with --oversubscribe yielding, near 100 %).
+TEST(MpiRuntime, IdleBarrierWaitsAsleep) {
+  Comm comm = Comm::world();
+  const Stopwatch watch;
+  if (comm.rank() == 0) {
+    volatile uint64_t spins = 0;
+    while (watch.wall() < 0.3) spins = spins + 1;
+  }
+  comm.idle_barrier();
+  const double wall = watch.wall(), cpu = watch.cpu();
+  if (comm.rank() == 0) return;
+  EXPECT_GE(wall, 0.2);  // the ranks' stopwatches start a little apart
+  EXPECT_LT(cpu, 0.25 * wall) << "rank " << comm.rank() << " spent " << cpu << " s of CPU in " << wall << " s";
 }
 
 TEST(MpiRuntime, StepWithoutErrorsReturns) {
