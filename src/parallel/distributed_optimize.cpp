@@ -154,6 +154,7 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
   MeshPart own = scatter_parts(comm, parts);
   out.tets_per_rank = comm.all_gather(static_cast<int64_t>(own.mesh.num_tets()));
   const double part_start = clock.wall();
+  out.split_seconds = part_start;
   OptimizeOptions part_options = options;
   part_options.set_aside_stuck_on_frozen = true;
   const OptimizeStats mine =
@@ -171,6 +172,9 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
     parts.clear();
   }
   const double band_start = clock.wall();
+  // After the slowest part (the ranks' clocks started apart: never below 0).
+  out.join_seconds =
+      std::max(0.0, band_start - part_start - *std::max_element(out.part_seconds.begin(), out.part_seconds.end()));
   add_counts(out.totals, optimize_band(comm, mesh, joined, options, out));
   out.band_seconds = clock.wall() - band_start;
   if (root) {

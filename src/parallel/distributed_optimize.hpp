@@ -50,7 +50,9 @@ constexpr int kBandPasses = 2;
 struct DistributedOptimizeStats {
   OptimizeStats totals;  // counts summed over the parts and the band; before/after of the whole mesh
   std::vector<int64_t> tets_per_rank;  // tets of each rank's part before optimizing
+  double split_seconds = 0;            // quality measured, tets partitioned and parts scattered (rank 0)
   std::vector<double> part_seconds;    // wall time of each rank's part
+  double join_seconds = 0;             // parts gathered and joined (rank 0)
   size_t band_tets = 0;                // tets of the band (step 4)
   size_t crossing_tets = 0;            // rank 0's last pass over the band's shares
   double band_seconds = 0;             // the band's wall time on rank 0

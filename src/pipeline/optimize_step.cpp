@@ -43,7 +43,9 @@ ojson optimize_step(const Comm& comm, TetMesh& mesh, const OptimizeOptions& opti
   c["measure s"] = n.measure_seconds;
   if (comm.size() > 1) {
     c["tets per rank"] = d.tets_per_rank;
+    c["split s"] = d.split_seconds;
     c["part s per rank"] = d.part_seconds;
+    c["join s"] = d.join_seconds;
     c["band tets"] = d.band_tets;
     c["crossing tets"] = d.crossing_tets;
     c["band s"] = d.band_seconds;

@@ -136,6 +136,15 @@ TEST_P(DistributedOptimize, TheCommandReportsThePartsAndWritesTheSameMeshTwice) 
     ASSERT_TRUE(counts.contains("tets per rank"));
     EXPECT_EQ(counts["tets per rank"].size(), static_cast<size_t>(comm.size()));
     EXPECT_EQ(counts["part s per rank"].size(), static_cast<size_t>(comm.size()));
+    // The phases' times, in turn, fit in the step's time (up to the skew
+    // of the ranks' clocks, well under 10 ms).
+    double slowest_part = 0;
+    for (const auto& s : counts["part s per rank"]) slowest_part = std::max(slowest_part, s.get<double>());
+    const double split = counts["split s"].get<double>(), join = counts["join s"].get<double>();
+    EXPECT_GE(split, 0);
+    EXPECT_GE(join, 0);
+    EXPECT_LE(split + slowest_part + join + counts["band s"].get<double>(),
+              (*optimize)["wall_s"][0].get<double>() + 0.01);
     EXPECT_GT(counts["band tets"].get<int64_t>(), 0);
     EXPECT_GT(counts["crossing tets"].get<int64_t>(), 0);
   } else {
