@@ -24,8 +24,9 @@ void collective_step(const Comm& comm, const std::function<void()>& work) {
     code = kExitInternal;
     message = std::string("internal error: ") + e.what();
   }
-  // Ranks done first sleep while the others work (a rank spinning in MPI's
-  // progress loop slowed rank 0's serial steps).
+  // Ranks done first sleep while the others work (spinning in MPI's
+  // progress loop, a waiting rank burned its core through rank 0's serial
+  // steps).
   comm.idle_barrier();
   // The lowest failing rank speaks for all.
   int64_t speaker = comm.max(code != 0 ? static_cast<int64_t>(comm.size() - comm.rank()) : 0);
