@@ -6,12 +6,12 @@
 // boundary leaves and gather them on every rank), make the initial front.
 // Then tree-supported face removals (rank 0's; on the ranks, each rank
 // removes the faces of its own leaves and rank 0 finishes:
-// tree_removal_step.hpp) and,
-// for the faces they leave, face removals with new vertices (rank 0); a
-// front left after those exits 3 (naming where); --stop-after templates
-// writes the templated core and exits 0. Then quality optimization, on the
-// ranks' parts when P > 1 (optimize_step.hpp), its alternatives on small
-// meshes, and restarts on the band around the worst tet (restarts_step.hpp).
+// tree_removal_step.hpp) and, for the faces they leave, face removals with
+// new vertices (rank 0); a front left after those exits 3 (naming where);
+// --stop-after templates writes the templated core and exits 0. Then
+// quality optimization, on the ranks' parts when P > 1 (optimize_step.hpp),
+// its alternatives on small meshes, and restarts on the band around the
+// worst tet (restarts_step.hpp).
 #include "pipeline/mesh_attempt.hpp"
 
 #include <algorithm>
