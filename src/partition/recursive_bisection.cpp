@@ -111,7 +111,7 @@ PartitionResult partition_points(const Comm& comm, const double* xyz, const doub
   std::vector<RankRange> ranges{{0, comm.size()}};
   std::vector<int32_t> range_of(n, 0);
   std::vector<int32_t> slot(n);
-  std::vector<uint64_t> effective(n), keys(n * kCutKeyWords);
+  std::vector<uint64_t> effective(n);
   std::vector<double> proj(n);
   for (int depth = 0;; ++depth) {
     // The rank sets still to split are this level's slots.
@@ -140,27 +140,18 @@ PartitionResult partition_points(const Comm& comm, const double* xyz, const doub
     std::vector<int> axis;
     std::vector<double> normal = level_normals(comm, xyz, effective.data(), slot.data(), n, slots, method, depth, axis);
 
-    // Keys: the projection, then the coordinates, the weight and the global
-    // index break ties.
-    for (size_t i = 0; i < n; ++i) {
-      if (slot[i] < 0) continue;
-      const double* x = &xyz[3 * i];
-      proj[i] = project(&normal[static_cast<size_t>(slot[i]) * 3], x);
-      uint64_t* k = &keys[i * kCutKeyWords];
-      k[0] = ordered_key(proj[i]);
-      k[1] = ordered_key(x[0]);
-      k[2] = ordered_key(x[1]);
-      k[3] = ordered_key(x[2]);
-      k[4] = ordered_key(weight[i]);
-      k[5] = first_index + i;
-    }
+    // Keys (CutKeys): the projection, then the coordinates, the weight and
+    // the global index break ties.
+    for (size_t i = 0; i < n; ++i)
+      if (slot[i] >= 0) proj[i] = project(&normal[static_cast<size_t>(slot[i]) * 3], &xyz[3 * i]);
+    const CutKeys keys{proj.data(), xyz, weight, first_index};
     std::vector<uint64_t> target(slots);
     for (size_t s = 0; s < slots; ++s) {
       const RankRange& rr = ranges[range_of_slot[s]];
       int64_t total = totals[s * 2] > 0 ? totals[s * 2] : totals[s * 2 + 1];
       target[s] = fraction_of(static_cast<uint64_t>(total), (rr.last - rr.first) / 2, rr.last - rr.first);
     }
-    std::vector<uint8_t> low = weighted_cut(comm, keys.data(), effective.data(), slot.data(), n, target);
+    std::vector<uint8_t> low = weighted_cut(comm, keys, effective.data(), slot.data(), n, target);
 
     // Offsets midway between the last low projection and the first high one.
     std::vector<double> extreme(slots * 2, -std::numeric_limits<double>::infinity());

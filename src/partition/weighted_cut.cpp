@@ -12,9 +12,10 @@ namespace {
 constexpr size_t kBuckets = 256;
 constexpr size_t kRounds = 8 * kCutKeyWords;
 
-// Byte `round` of a key, the most significant byte of the first word first.
-size_t key_byte(const uint64_t* key, size_t round) {
-  return static_cast<size_t>((key[round / 8] >> (8 * (7 - round % 8))) & 0xff);
+// Byte `round` of point i's key, the most significant byte of the first
+// word first.
+size_t key_byte(const CutKeys& keys, size_t i, size_t round) {
+  return static_cast<size_t>((keys.word(i, round / 8) >> (8 * (7 - round % 8))) & 0xff);
 }
 
 struct SlotState {
@@ -27,7 +28,7 @@ struct SlotState {
 
 }  // namespace
 
-std::vector<uint8_t> weighted_cut(const Comm& comm, const uint64_t* keys, const uint64_t* weight,
+std::vector<uint8_t> weighted_cut(const Comm& comm, const CutKeys& keys, const uint64_t* weight,
                                   const int32_t* slot, size_t n, const std::vector<uint64_t>& target) {
   const size_t slots = target.size();
   std::vector<uint8_t> low(n, 0);
@@ -40,7 +41,7 @@ std::vector<uint8_t> weighted_cut(const Comm& comm, const uint64_t* keys, const 
   for (size_t round = 0; round < kRounds; ++round) {
     std::fill(hist.begin(), hist.end(), 0);
     for (size_t i : open) {
-      size_t at = (static_cast<size_t>(slot[i]) * kBuckets + key_byte(&keys[i * kCutKeyWords], round)) * 2;
+      size_t at = (static_cast<size_t>(slot[i]) * kBuckets + key_byte(keys, i, round)) * 2;
       hist[at] += static_cast<int64_t>(weight[i]);
       hist[at + 1] += 1;
     }
@@ -84,7 +85,7 @@ std::vector<uint8_t> weighted_cut(const Comm& comm, const uint64_t* keys, const 
     size_t kept = 0;
     for (size_t i : open) {
       SlotState& st = state[static_cast<size_t>(slot[i])];
-      size_t b = key_byte(&keys[i * kCutKeyWords], round);
+      size_t b = key_byte(keys, i, round);
       if (b < st.bucket) {
         low[i] = 1;
       } else if (b == st.bucket) {

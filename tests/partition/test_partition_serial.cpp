@@ -164,16 +164,20 @@ TEST(PartitionSerial, OrderedKeysFollowTheDoubles) {
 }
 
 TEST(PartitionSerial, WeightedCutTakesThePrefixClosestToTheTarget) {
-  // Keys 0..5 in the first word, given out of order; weights 1..6.
+  // Projections ordered 0..5 (given out of order, differing in a middle
+  // byte of their keys' first word); weights 1..6.
   std::vector<uint64_t> order{3, 0, 5, 1, 4, 2};
-  std::vector<uint64_t> keys(order.size() * kCutKeyWords, 0), w(order.size());
-  std::vector<int32_t> slot(order.size(), 0);
-  for (size_t i = 0; i < order.size(); ++i) {
-    keys[i * kCutKeyWords] = order[i] << 40;  // the keys differ in a middle byte
+  const size_t n = order.size();
+  std::vector<double> projection(n), xyz(3 * n, 0.0), key_weight(n, 1.0);
+  std::vector<uint64_t> w(n);
+  std::vector<int32_t> slot(n, 0);
+  for (size_t i = 0; i < n; ++i) {
+    projection[i] = 1.0 + std::ldexp(static_cast<double>(order[i]), -30);
     w[i] = order[i] + 1;
   }
+  const CutKeys keys{projection.data(), xyz.data(), key_weight.data(), 0};
   auto low_keys = [&](uint64_t target) {
-    std::vector<uint8_t> low = weighted_cut(Comm::world(), keys.data(), w.data(), slot.data(), w.size(), {target});
+    std::vector<uint8_t> low = weighted_cut(Comm::world(), keys, w.data(), slot.data(), n, {target});
     std::vector<uint64_t> out;
     for (size_t i = 0; i < low.size(); ++i)
       if (low[i]) out.push_back(order[i]);
@@ -189,19 +193,29 @@ TEST(PartitionSerial, WeightedCutTakesThePrefixClosestToTheTarget) {
 }
 
 TEST(PartitionSerial, WeightedCutBreaksTiesWithLaterKeyWords) {
-  // Equal first words; the third word orders the points; points of no slot stay out.
+  // Equal projections and x; y (the key's third word) orders the points;
+  // points of no slot stay out.
   const size_t n = 8;
-  std::vector<uint64_t> keys(n * kCutKeyWords, 7), w(n, 1);
+  std::vector<double> projection(n, 7.0), xyz(3 * n, 0.0), key_weight(n, 1.0);
+  std::vector<uint64_t> w(n, 1);
   std::vector<int32_t> slot(n, 0);
-  for (size_t i = 0; i < n; ++i) keys[i * kCutKeyWords + 2] = n - i;
+  for (size_t i = 0; i < n; ++i) xyz[3 * i + 1] = static_cast<double>(n - i);
+  const CutKeys keys{projection.data(), xyz.data(), key_weight.data(), 0};
   slot[0] = -1;
-  std::vector<uint8_t> low = weighted_cut(Comm::world(), keys.data(), w.data(), slot.data(), n, {3});
+  std::vector<uint8_t> low = weighted_cut(Comm::world(), keys, w.data(), slot.data(), n, {3});
   EXPECT_EQ(low, (std::vector<uint8_t>{0, 0, 0, 0, 0, 1, 1, 1}));
   // Two slots at once, one of them empty.
   slot.assign(n, 0);
   for (size_t i = 0; i < n; i += 2) slot[i] = 2;
-  low = weighted_cut(Comm::world(), keys.data(), w.data(), slot.data(), n, {1, 0, 2});
+  low = weighted_cut(Comm::world(), keys, w.data(), slot.data(), n, {1, 0, 2});
   EXPECT_EQ(low, (std::vector<uint8_t>{0, 0, 0, 0, 1, 0, 1, 1}));
+  // Equal points and weights: the global index (the last word) decides,
+  // the lowest first.
+  std::fill(xyz.begin(), xyz.end(), 0.5);
+  slot.assign(n, 0);
+  const CutKeys same{projection.data(), xyz.data(), key_weight.data(), 40};
+  EXPECT_EQ(weighted_cut(Comm::world(), same, w.data(), slot.data(), n, {3}),
+            (std::vector<uint8_t>{1, 1, 1, 0, 0, 0, 0, 0}));
 }
 
 TEST(PartitionSerial, MigrateOnOneRankIsTheIdentity) {
