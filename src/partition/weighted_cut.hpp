@@ -3,11 +3,10 @@
 //
 // Contract: collective over `comm`. Point i belongs to slot slot[i] in
 // [0, target.size()), or to none when slot[i] < 0. Each point has a key of
-// kCutKeyWords 64-bit words (compared lexicographically, CutKeys: computed
-// when read, none stored) that is distinct
-// from every other key of its slot over all ranks, and an integer weight
-// (sums over all ranks below 2^62). In the key order, the low side of a slot
-// is a prefix: the points before the first point e at which the running
+// kCutKeyWords 64-bit words (CutKeys, compared lexicographically) that is
+// distinct from every other key of its slot over all ranks, and an integer
+// weight (sums over all ranks below 2^62). In the key order, the low side of
+// a slot is a prefix: the points before the first point e at which the running
 // weight reaches target[s], plus e itself when that brings the low weight
 // closer to target[s] (or as close). The result is 1 for the points on the
 // low side, 0 for the others (and for points of no slot). It depends only on
