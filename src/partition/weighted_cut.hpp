@@ -29,6 +29,7 @@
 
 namespace partet {
 
+// The words of a key (CutKeys::word 0 .. kCutKeyWords - 1).
 constexpr size_t kCutKeyWords = 6;
 
 // An unsigned key with the order of the doubles (-0.0 and 0.0 are one key).
@@ -53,7 +54,7 @@ struct CutKeys {
       case 0: return ordered_key(projection[i]);
       case 1: case 2: case 3: return ordered_key(xyz[3 * i + (w - 1)]);
       case 4: return ordered_key(weight[i]);
-      default: return first_index + i;
+      default: return first_index + i;  // word kCutKeyWords - 1
     }
   }
 };
