@@ -1,8 +1,7 @@
 // A mesh held whole on rank 0 cut into one part per rank and sent out:
 // the tets split by recursive inertial bisection of their centroids (equal
-// tet counts), each part sent to its rank. The distributed optimizer's
-// parts (distributed_optimize.hpp) and the pieces a .pvtu output is
-// written in (distribute_mesh) are made this way.
+// tet counts), each part sent to its rank: the distributed optimizer's
+// parts (distributed_optimize.hpp).
 #pragma once
 
 #include <cstdint>
@@ -22,11 +21,5 @@ std::vector<int32_t> partition_tets(const Comm& comm, const TetMesh& mesh);
 // global ids, and its cut flags) to rank r; every rank returns its own,
 // `whole` left empty. The other ranks pass no parts.
 MeshPart scatter_parts(const Comm& comm, const std::vector<MeshPart>& parts);
-
-// Collective: rank 0's whole mesh (without global ids) as this rank's
-// piece: the tets partition_tets gives it, the vertices they use (in the
-// whole mesh's order) with their whole-mesh index as global id, and the
-// boundary triangles that are faces of its tets.
-TetMesh distribute_mesh(const Comm& comm, const TetMesh& whole);
 
 }  // namespace partet

@@ -1,7 +1,9 @@
 // write_distributed_mesh: pieces plus index, rank 0's whole mesh as it is,
-// or gather-join-write on rank 0.
+// or gather-join-write on rank 0; write_whole_as_pieces: rank 0's whole
+// mesh cut into runs of tets, each written as a piece.
 #include "parallel/write_parts.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -11,7 +13,33 @@
 #include "parallel/collective_step.hpp"
 
 namespace partet {
+namespace {
 
+// The piece of `whole` holding tets [begin, end) (see write_whole_as_pieces);
+// `local` is scratch (one entry per whole vertex, left as it came: all
+// UINT32_MAX).
+TetMesh run_piece(const TetMesh& whole, size_t begin, size_t end, std::vector<uint32_t>& local) {
+  TetMesh piece;
+  std::vector<uint32_t> used;
+  for (size_t k = 4 * begin; k < 4 * end; ++k)
+    if (local[whole.tets[k]] == UINT32_MAX) {
+      local[whole.tets[k]] = 0;
+      used.push_back(whole.tets[k]);
+    }
+  std::sort(used.begin(), used.end());
+  piece.global_ids.assign(used.begin(), used.end());
+  piece.xyz.reserve(3 * used.size());
+  for (size_t i = 0; i < used.size(); ++i) {
+    local[used[i]] = static_cast<uint32_t>(i);
+    piece.xyz.insert(piece.xyz.end(), whole.point(used[i]), whole.point(used[i]) + 3);
+  }
+  piece.tets.reserve(4 * (end - begin));
+  for (size_t k = 4 * begin; k < 4 * end; ++k) piece.tets.push_back(local[whole.tets[k]]);
+  for (uint32_t v : used) local[v] = UINT32_MAX;
+  return piece;
+}
+
+}  // namespace
 
 std::string serialize_part(const TetMesh& part) {
   std::string out;
@@ -63,6 +91,25 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
     parts.reserve(images.size());
     for (const auto& image : images) parts.push_back(deserialize_part(image));
     write_volume_file(merge_parts(parts), path, options);
+  });
+}
+
+void write_whole_as_pieces(const TetMesh& whole, const std::string& path, const WriteOptions& options,
+                           const Comm& comm) {
+  if (comm.size() == 1) return write_distributed_mesh(whole, path, options, comm);
+  collective_step(comm, [&] {
+    require_extension(path, {"pvtu"}, "volume mesh in pieces");
+    if (comm.rank() != 0) return;
+    PARTET_ASSERT(whole.global_ids.empty(), "write_whole_as_pieces: a whole mesh has no global ids");
+    const size_t pieces = static_cast<size_t>(comm.size()), n = whole.num_tets();
+    std::vector<uint32_t> local(whole.num_vertices(), UINT32_MAX);
+    std::vector<std::string> names;
+    for (size_t r = 0; r < pieces; ++r) {
+      const TetMesh piece = run_piece(whole, r * n / pieces, (r + 1) * n / pieces, local);
+      write_file_atomic(pvtu_piece_path(path, static_cast<int>(r)), format_vtu(piece));
+      names.push_back(file_basename(pvtu_piece_path(path, static_cast<int>(r))));
+    }
+    write_file_atomic(path, format_pvtu(names, true));
   });
 }
 

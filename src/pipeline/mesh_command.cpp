@@ -40,7 +40,6 @@
 #include "octree/sizing.hpp"
 #include "optimize/optimize.hpp"
 #include "parallel/collective_step.hpp"
-#include "parallel/mesh_scatter.hpp"
 #include "parallel/vertex_links.hpp"
 #include "parallel/write_parts.hpp"
 #include "pipeline/cone_alternative.hpp"
@@ -594,16 +593,21 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
           return root_rank ? local_restarts(s.mesh, optimized, optimize_options(options)) : ojson::object();
         });
       report.run_step("write mesh", [&] {
-        // On P > 1 ranks a .pvtu is written in balanced pieces, one per rank.
+        // On P > 1 ranks a .pvtu is written in balanced pieces, one per
+        // rank, by rank 0, which holds the whole mesh.
         const bool pieces = distributed && file_extension(options.output) == "pvtu";
-        if (pieces) s.mesh = distribute_mesh(comm, s.mesh);
-        write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
+        if (pieces)
+          write_whole_as_pieces(s.mesh, options.output, {options.ascii}, comm);
+        else
+          write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
         ojson c;
+        c["tets"] = s.mesh.num_tets();
         if (pieces) {
-          c["tets"] = comm.sum(static_cast<int64_t>(s.mesh.num_tets()));
-          c["tets per rank"] = comm.all_gather(static_cast<int64_t>(s.mesh.num_tets()));
+          const size_t n = s.mesh.num_tets(), p = static_cast<size_t>(comm.size());
+          std::vector<int64_t> per_piece;
+          for (size_t r = 0; r < p; ++r) per_piece.push_back(static_cast<int64_t>((r + 1) * n / p - r * n / p));
+          c["tets per rank"] = per_piece;
         } else {
-          c["tets"] = s.mesh.num_tets();
           c["vertices"] = s.mesh.num_vertices();
         }
         c["file"] = options.output;

@@ -1,5 +1,6 @@
 // MPI runtime on 1, 2 and 4 ranks: checked collectives, agreement on errors
-// (no rank left waiting), per-rank report timings, distributed writes.
+// (no rank left waiting), per-rank report timings, distributed writes, a
+// whole mesh written in pieces by rank 0.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -168,6 +169,44 @@ TEST(MpiRuntime, WholeMeshOnRankZeroIsWrittenAsItIs) {
     write_volume_file(whole, alone, {});
     EXPECT_EQ(read_file_bytes(dir + name), read_file_bytes(alone)) << name;
   }
+}
+
+// A mesh whole on rank 0 goes to a .pvtu of one piece per rank, all
+// written by rank 0: consecutive runs of tets of equal size (within one),
+// each piece on the vertices its tets use, numbered by the whole mesh;
+// together the whole mesh.
+TEST(MpiRuntime, WholeMeshOnRankZeroIsWrittenInPieces) {
+  Comm comm = Comm::world();
+  const std::string dir = test::shared_dir(comm, "write_pieces");
+  const TetMesh whole = test::cube_tets();
+  const TetMesh mine = comm.rank() == 0 ? whole : TetMesh{};
+  write_whole_as_pieces(mine, dir + "/cube.pvtu", {}, comm);
+  if (comm.rank() != 0) return;
+  const TetMesh joined = read_volume_file(dir + "/cube.pvtu");
+  EXPECT_EQ(joined.num_tets(), 6u);
+  EXPECT_EQ(joined.num_vertices(), 8u);
+  const SurfaceMesh box = test::box_surface();
+  EXPECT_TRUE(validate_mesh(joined, &box).valid);
+  size_t tets = 0;
+  for (int r = 0; r < comm.size(); ++r) {
+    const TetMesh piece = read_volume_file(pvtu_piece_path(dir + "/cube.pvtu", r));
+    const size_t first = 6 * static_cast<size_t>(r) / static_cast<size_t>(comm.size());
+    ASSERT_EQ(piece.num_tets(), 6 * static_cast<size_t>(r + 1) / static_cast<size_t>(comm.size()) - first) << r;
+    for (size_t t = 0; t < piece.num_tets(); ++t)
+      for (int k = 0; k < 4; ++k) {
+        const uint32_t v = piece.tets[4 * t + static_cast<size_t>(k)];
+        if (comm.size() == 1) {
+          EXPECT_EQ(v, whole.tets[4 * (first + t) + static_cast<size_t>(k)]);
+          continue;
+        }
+        ASSERT_EQ(piece.global_ids.size(), piece.num_vertices());
+        const uint64_t g = piece.global_ids[v];
+        EXPECT_EQ(g, whole.tets[4 * (first + t) + static_cast<size_t>(k)]) << r;
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(piece.point(v)[i], whole.point(g)[i]);
+      }
+    tets += piece.num_tets();
+  }
+  EXPECT_EQ(tets, 6u);
 }
 
 }  // namespace
