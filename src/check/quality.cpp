@@ -321,6 +321,28 @@ QualityStats measure_quality(const TetMesh& mesh) {
   return q;
 }
 
+std::vector<uint8_t> tets_under_angle(const TetMesh& mesh, double degrees) {
+  const double cos_limit = std::cos(degrees / kDegreesPerRadian);
+  std::vector<uint8_t> under(mesh.num_tets(), 0);
+  const auto block = std::make_unique<ShapeBlock>();
+  ShapeBlock& s = *block;
+  size_t first = 0;  // the block's first tet: every tet goes in, in order
+  const auto mark = [&] {
+    measure_block(s);
+    for (size_t k = 0; k < s.n; ++k) under[first + k] = s.faces[k] == 0 || s.cos_lo[k] > cos_limit;
+    first += s.n;
+    s.n = 0;
+  };
+  for (size_t t = 0; t < mesh.num_tets(); ++t) {
+    const uint32_t* v = &mesh.tets[4 * t];
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 3; ++i) s.corner[3 * j + i][s.n] = mesh.point(v[j])[i];
+    if (++s.n == kShapeBlock) mark();
+  }
+  mark();
+  return under;
+}
+
 void to_json(nlohmann::json& j, const QualityStats& q) {
   auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
   j = nlohmann::json{{"tets", q.tets},

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "core/tet_mesh.hpp"
@@ -50,6 +52,12 @@ bool widest_dihedral_faces(const double* p0, const double* p1, const double* p2,
 double tet_radius_ratio(const double* p0, const double* p1, const double* p2, const double* p3);
 
 QualityStats measure_quality(const TetMesh& mesh);
+
+// Per tet of a mesh whose tets all index its vertices: 1 when it has a
+// dihedral angle under `degrees` or a face of zero area (tet_shape's
+// smallest angle under `degrees`, found from its cosine, as
+// measure_quality counts them), else 0.
+std::vector<uint8_t> tets_under_angle(const TetMesh& mesh, double degrees);
 
 // x is at least as good as y in the three measures the optimizer serves
 // (smallest dihedral angle, share of tets under 10 degrees, mean radius

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numbers>
 #include <string>
 #include <utility>
 
@@ -19,8 +18,6 @@
 namespace partet {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180;
 
 // The counts of the optimizer's stats (not before/after or passes) and
 // their seconds, as one list: what the parts and the band add up.
@@ -63,12 +60,10 @@ OptimizeStats sum_over_ranks(const Comm& comm, OptimizeStats x) {
 // size.
 std::vector<int32_t> band_of(const TetMesh& mesh, const std::vector<int32_t>& part_of_tet, size_t& band_tets) {
   std::vector<uint8_t> marked = cut_vertices(mesh, part_of_tet);
-  for (size_t t = 0; t < mesh.num_tets(); ++t) {
-    const uint32_t* v = &mesh.tets[4 * t];
-    if (tet_min_dihedral(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])) <
-        kBandAngle * kDegree)
-      for (int i = 0; i < 4; ++i) marked[v[i]] = 1;
-  }
+  const std::vector<uint8_t> under = tets_under_angle(mesh, kBandAngle);
+  for (size_t t = 0; t < mesh.num_tets(); ++t)
+    if (under[t])
+      for (int i = 0; i < 4; ++i) marked[mesh.tets[4 * t + static_cast<size_t>(i)]] = 1;
   const std::vector<uint8_t> band = band_around(mesh, std::move(marked), 1);
   std::vector<int32_t> in_band(mesh.num_tets());
   for (size_t t = 0; t < mesh.num_tets(); ++t) {

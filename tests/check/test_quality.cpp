@@ -1,5 +1,6 @@
 // Tests of the tet quality metrics: the regular tet, the Kuhn cube, slivers,
-// degenerate tets (no NaN), the 1st percentile, skipped tets and JSON.
+// degenerate tets (no NaN), the 1st percentile, skipped tets, the tets
+// under an angle, and JSON.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -232,6 +233,40 @@ TEST(QualityMeasure, IsThePerTetShapesAddedUp) {
   EXPECT_GT(rad_to_deg(smallest), 0);
   EXPECT_NEAR(fair.min_dihedral_deg, rad_to_deg(smallest), 1e-12);
   EXPECT_NEAR(fair.max_dihedral_deg, rad_to_deg(largest), 1e-12);
+}
+
+// tets_under_angle flags the tets tet_shape gives a smallest angle under
+// the bound (random tets, over more than one block of them) and the flat
+// ones; the regular tet only above its own angle.
+TEST(QualityMeasure, TetsUnderAngleAreTheShapesUnderIt) {
+  TetMesh m;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  for (int i = 0; i < 200; ++i) m.xyz.insert(m.xyz.end(), {coordinate(rng), coordinate(rng), coordinate(rng)});
+  m.xyz.insert(m.xyz.end(), {0, 0, 0, 1, 0, 0, 2, 0, 0});  // collinear: a flat tet
+  std::uniform_int_distribution<uint32_t> vertex(0, 199);
+  for (int t = 0; t < 900; ++t) {
+    const uint32_t a = vertex(rng), b = (a + 1 + vertex(rng) % 66) % 200, c = (b + 1 + vertex(rng) % 66) % 200,
+                   d = (c + 1 + vertex(rng) % 66) % 200;
+    m.tets.insert(m.tets.end(), {a, b, c, d});
+  }
+  m.tets.insert(m.tets.end(), {200, 201, 202, 7});
+  for (const double degrees : {2.0, 10.0, 40.0}) {
+    const std::vector<uint8_t> under = tets_under_angle(m, degrees);
+    ASSERT_EQ(under.size(), m.num_tets());
+    size_t count = 0;
+    for (size_t t = 0; t < m.num_tets(); ++t) {
+      const TetShape s = shape_of(m, t);
+      EXPECT_EQ(under[t] != 0, rad_to_deg(s.min_dihedral_rad) < degrees) << t << " at " << degrees;
+      count += under[t];
+    }
+    EXPECT_GT(count, 0u);
+    EXPECT_LT(count, m.num_tets());
+    EXPECT_EQ(under.back(), 1);
+  }
+  const TetMesh regular = regular_tet();
+  EXPECT_EQ(tets_under_angle(regular, kRegularDihedral - 1e-9)[0], 0);
+  EXPECT_EQ(tets_under_angle(regular, kRegularDihedral + 1e-9)[0], 1);
 }
 
 TEST(QualityMeasure, SkipsOutOfRangeAndNonFiniteTets) {
