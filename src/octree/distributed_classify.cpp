@@ -4,13 +4,12 @@
 
 #include <algorithm>
 
-#include "octree/triangle_bins.hpp"
 
 namespace partet {
 
 ClassCounts classify_distributed(const Comm& comm, DistributedOctree& tree, const SurfaceMesh& surface,
                                  const RootCube& root, const std::vector<double>& vertex_size,
-                                 const ClassifyOptions& options) {
+                                 const ClassifyOptions& options, LeafTriangles* own_rows) {
   const int rank = comm.rank();
   LinearOctree view = partition_view(tree.leaves, tree.ranges, rank);
   LeafTriangles bins = bin_triangles(view, surface, root);
@@ -23,6 +22,15 @@ ClassCounts classify_distributed(const Comm& comm, DistributedOctree& tree, cons
   comm.min(coarsest.data(), coarsest.size());
   for (size_t t = 0; t < coarsest.size(); ++t) bins.coarsest[t] = static_cast<uint8_t>(coarsest[t]);
   const ClassCounts local = classify_leaves(view, surface, root, vertex_size, bins, options);
+  if (own_rows) {
+    *own_rows = LeafTriangles{};
+    own_rows->first.push_back(0);
+    for (size_t i = 0; i < view.size(); ++i) {
+      if (view.owner[i] != rank) continue;
+      own_rows->tris.insert(own_rows->tris.end(), bins.tris.begin() + bins.first[i], bins.tris.begin() + bins.first[i + 1]);
+      own_rows->first.push_back(static_cast<uint32_t>(own_rows->tris.size()));
+    }
+  }
   tree.leaves = leaves_of(view, rank);
   int64_t n[5] = {0, 0, 0, 0, static_cast<int64_t>(local.groups)};
   for (LeafClass c : tree.leaves.cls) {

@@ -19,13 +19,17 @@
 
 #include "octree/classify.hpp"
 #include "octree/distributed_build.hpp"
+#include "octree/triangle_bins.hpp"
 
 namespace partet {
 
 // Collective: sets tree.leaves.cls; returns the counts summed over ranks
-// (groups: the sum of the ranks' group counts).
+// (groups: the sum of the ranks' group counts). With `own_rows`, the
+// triangles binned into this rank's leaves (bin_triangles' rows of them, in
+// their order; no `coarsest`), which gather_tree_and_core can put together
+// into the whole tree's.
 ClassCounts classify_distributed(const Comm& comm, DistributedOctree& tree, const SurfaceMesh& surface,
                                  const RootCube& root, const std::vector<double>& vertex_size,
-                                 const ClassifyOptions& options = {});
+                                 const ClassifyOptions& options = {}, LeafTriangles* own_rows = nullptr);
 
 }  // namespace partet

@@ -81,9 +81,11 @@ struct MeshState {
   BoundaryPartition boundary;  // this rank's boundary leaves and front after step 3
   bool whole = false;
   bool thin_core_refined = false;  // refine_thin_core changed the sizes
-  // On one rank, the triangles binned into the tree's leaves by the last
+  // The triangles binned into the tree's leaves by the last
   // classification, for the offset gap vertices (the leaves do not change
-  // after it); freed with the initial front.
+  // after it): on one rank the whole tree's; on P ranks each rank's own
+  // leaves', then the whole tree's where it is gathered; freed with the
+  // initial front.
   LeafTriangles bins;
   InitialFront initial_front;
   TetMesh mesh;  // core, then the tets of face removals (front vertex numbering)
@@ -255,8 +257,9 @@ ojson classify(MeshState& s, const MeshOptions& o, const Comm& comm) {
   ClassifyOptions options;
   options.too_close = o.too_close;
   if (comm.size() == 1) s.bins = bin_triangles(s.tree, s.surface, s.root);
-  ClassCounts n = comm.size() > 1 ? classify_distributed(comm, s.own, s.surface, s.root, s.sizing.size, options)
-                                  : classify_leaves(s.tree, s.surface, s.root, s.sizing.size, s.bins, options);
+  ClassCounts n = comm.size() > 1
+                      ? classify_distributed(comm, s.own, s.surface, s.root, s.sizing.size, options, &s.bins)
+                      : classify_leaves(s.tree, s.surface, s.root, s.sizing.size, s.bins, options);
   ojson c;
   c["boundary"] = n.boundary;
   c["too close"] = n.too_close;
@@ -450,7 +453,7 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
       // (and for the templates' front alone, --front-out) rank 0 needs them.
       const bool everywhere = options.stop_after == StopAfter::kNone && (on_ranks || options.treeless_on_ranks);
       report.run_step(everywhere ? "gather tree and core" : "gather on rank 0", [&] {
-        gather_tree_and_core(comm, s.view, s.part, s.tree, s.core, everywhere);
+        gather_tree_and_core(comm, s.view, s.part, s.tree, s.core, everywhere, &s.bins);
         s.whole = root_rank || everywhere;
         ojson c;
         if (root_rank) c["vertices"] = s.core.mesh.num_vertices();

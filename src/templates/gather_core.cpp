@@ -14,8 +14,9 @@
 namespace partet {
 namespace {
 
-// This rank's leaves, their face cases and tet counts, and its core part.
-std::string part_image(const LinearOctree& view, const TemplateCore& part, int rank) {
+// This rank's leaves, their face cases and tet counts, its core part, and
+// its leaves' triangle rows when it has them (else two empty arrays).
+std::string part_image(const LinearOctree& view, const TemplateCore& part, int rank, const LeafTriangles* rows) {
   std::vector<uint64_t> key;
   std::vector<uint8_t> level, face_case;
   std::vector<LeafClass> cls;
@@ -39,17 +40,20 @@ std::string part_image(const LinearOctree& view, const TemplateCore& part, int r
   put_array(out, part.mesh.global_ids);
   const std::vector<uint64_t> templated{part.leaves_templated};
   put_array(out, templated);
+  put_array(out, rows ? rows->first : std::vector<uint32_t>{});
+  put_array(out, rows ? rows->tris : std::vector<uint32_t>{});
   return out;
 }
 
 }  // namespace
 
 void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
-                          LinearOctree& tree, TemplateCore& core, bool everywhere) {
-  const std::string mine = part_image(view, part, comm.rank());
+                          LinearOctree& tree, TemplateCore& core, bool everywhere, LeafTriangles* rows) {
+  const std::string mine = part_image(view, part, comm.rank(), rows);
   const std::vector<std::string> images = everywhere ? comm.all_gather(mine) : comm.gather(mine, 0);
   tree = LinearOctree();
   core = TemplateCore();
+  if (rows) *rows = LeafTriangles{};
   if (images.empty()) return;  // not rank 0, and not everywhere
   struct Part {
     std::vector<double> xyz;
@@ -65,11 +69,21 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
     for (uint8_t l : get_array<uint8_t>(image, pos)) tree.level.push_back(l);
     for (LeafClass c : get_array<LeafClass>(image, pos)) tree.cls.push_back(c);
     for (uint8_t c : get_array<uint8_t>(image, pos)) core.face_case.push_back(c);
+    const size_t leaves_before = tets_of_leaf.size();
     for (uint32_t n : get_array<uint32_t>(image, pos)) tets_of_leaf.push_back(n);
     parts[r].xyz = get_array<double>(image, pos);
     parts[r].tets = get_array<uint32_t>(image, pos);
     parts[r].ids = get_array<uint64_t>(image, pos);
     core.leaves_templated += get_array<uint64_t>(image, pos).at(0);
+    const std::vector<uint32_t> first = get_array<uint32_t>(image, pos);
+    const std::vector<uint32_t> tris = get_array<uint32_t>(image, pos);
+    if (!rows) continue;
+    PARTET_ASSERT(first.size() == tets_of_leaf.size() - leaves_before + 1,
+                  "gathered triangle rows disagree with the leaves");
+    if (rows->first.empty()) rows->first.push_back(0);
+    const uint32_t base = rows->first.back();
+    for (size_t i = 1; i < first.size(); ++i) rows->first.push_back(base + first[i]);
+    rows->tris.insert(rows->tris.end(), tris.begin(), tris.end());
   }
   tree.owner.assign(tree.size(), 0);
   PARTET_ASSERT(std::is_sorted(tree.key.begin(), tree.key.end()), "gathered leaves out of order");

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "octree/octree.hpp"
+#include "octree/triangle_bins.hpp"
 #include "parallel/comm.hpp"
 #include "templates/template_mesh.hpp"
 
@@ -23,8 +24,12 @@ namespace partet {
 // leaves); `part`: template_interior(view, root, rank). On rank 0 (on
 // every rank with `everywhere`), `tree` and `core` become the whole tree
 // (owner 0 everywhere) and template_interior(tree, root); elsewhere they
-// are left empty.
+// are left empty. With `rows` (in and out): on entry this rank's own
+// leaves' triangle rows (classify_distributed's own_rows); where the tree
+// is gathered they become the whole tree's (bin_triangles(tree)'s first
+// and tris), elsewhere empty.
 void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const TemplateCore& part,
-                          LinearOctree& tree, TemplateCore& core, bool everywhere = false);
+                          LinearOctree& tree, TemplateCore& core, bool everywhere = false,
+                          LeafTriangles* rows = nullptr);
 
 }  // namespace partet

@@ -5,7 +5,8 @@
 // one); classes after classification and the manifold pass are the serial
 // ones; no rank holds much more than its share; the ranks' core parts put
 // together are the serial core (same tets in the same order, same global ids
-// and coordinates), and every piece is a valid mesh.
+// and coordinates), and every piece is a valid mesh; the triangles binned
+// into the ranks' leaves, put together, are the gathered tree's bins.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 #include "octree/ghost_layer.hpp"
 #include "octree/neighbours.hpp"
 #include "octree/sizing.hpp"
+#include "octree/triangle_bins.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/vertex_links.hpp"
 #include "surface/diagnose.hpp"
@@ -219,8 +221,10 @@ size_t check_distributed(const Comm& comm, const Input& in, bool all_on_last) {
     EXPECT_EQ(tree.ranges.owner(key), comm.rank()) << label;
   }
 
-  classify_distributed(comm, tree, in.surface, in.root, in.sizing.size);
+  LeafTriangles rows;
+  classify_distributed(comm, tree, in.surface, in.root, in.sizing.size, {}, &rows);
   expect_same_leaves(all_leaves(comm, tree.leaves), s.classified, label + ": classified", true);
+  EXPECT_EQ(rows.first.size(), tree.leaves.size() + 1) << label;
 
   LinearOctree view = ghost_view(comm, tree);
   const ManifoldCoreCounts repairs = make_core_manifold(comm, view);
@@ -235,7 +239,15 @@ size_t check_distributed(const Comm& comm, const Input& in, bool all_on_last) {
   }
   LinearOctree gathered;
   TemplateCore core;
-  gather_tree_and_core(comm, view, part, gathered, core);
+  gather_tree_and_core(comm, view, part, gathered, core, false, &rows);
+  if (comm.rank() == 0) {
+    // The triangle rows put together are those of the gathered tree.
+    const LeafTriangles whole = bin_triangles(gathered, in.surface, in.root);
+    EXPECT_TRUE(rows.first == whole.first) << label;
+    EXPECT_TRUE(rows.tris == whole.tris) << label;
+  } else {
+    EXPECT_TRUE(rows.first.empty()) << label;
+  }
   if (comm.rank() == 0) {
     expect_same_leaves(gathered, s.manifold, label + ": gathered", true);
     EXPECT_TRUE(core.mesh.xyz == s.core.mesh.xyz) << label;
