@@ -305,10 +305,11 @@ ojson refine_thin_core(MeshState& s, const MeshOptions& o, const Comm& comm) {
     VertexSizing sizing;
     LinearOctree tree;
     DistributedOctree own;
+    LeafTriangles bins;  // the classification's, of this tree
   } kept;
   bool current_is_best = true;
   for (int attempt = 0; attempt < kThinCoreAttempts && best < o.min_core; ++attempt) {
-    if (current_is_best) kept = {std::move(s.sizing), std::move(s.tree), std::move(s.own)};
+    if (current_is_best) kept = {std::move(s.sizing), std::move(s.tree), std::move(s.own), std::move(s.bins)};
     MeshOptions finer = o;
     factor *= kThinCoreScale;
     finer.size_factor = factor;
@@ -329,6 +330,7 @@ ojson refine_thin_core(MeshState& s, const MeshOptions& o, const Comm& comm) {
     s.sizing = std::move(kept.sizing);
     s.tree = std::move(kept.tree);
     s.own = std::move(kept.own);
+    s.bins = std::move(kept.bins);
   }
   s.thin_core_refined = best_factor != o.size_factor;
   c["core fraction"] = best;
