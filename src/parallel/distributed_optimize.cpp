@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <string>
 #include <utility>
 
 #include "check/quality.hpp"
@@ -13,7 +12,6 @@
 #include "core/timer.hpp"
 #include "optimize/mesh_parts.hpp"
 #include "parallel/mesh_scatter.hpp"
-#include "parallel/write_parts.hpp"
 
 namespace partet {
 
@@ -112,10 +110,9 @@ OptimizeStats optimize_band(const Comm& comm, TetMesh& mesh, const std::vector<i
   MeshPart own = scatter_parts(comm, shares);
   const OptimizeStats mine = own.mesh.num_tets() > 0 ? optimize_mesh(own.mesh, band, &own.on_cut) : OptimizeStats{};
   comm.idle_barrier();
-  const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
+  gather_parts(comm, own, shares);
   OptimizeStats total = sum_over_ranks(comm, mine);
   if (!root) return total;
-  for (size_t r = 0; r < shares.size(); ++r) shares[r].mesh = deserialize_part(optimized[r]);
   const std::vector<int32_t> share_now = join_parts(whole_band.mesh, share_of, shares);
   shares.clear();
   const std::vector<int32_t> in_crossing = band_of(whole_band.mesh, share_now, out.crossing_tets);
@@ -157,12 +154,11 @@ DistributedOptimizeStats optimize_distributed(const Comm& comm, TetMesh& mesh, c
   const double part_seconds = clock.wall() - part_start;
   comm.idle_barrier();  // the ranks done first sleep until the last part is optimized
   out.part_seconds = comm.all_gather(part_seconds);
-  const std::vector<std::string> optimized = comm.gather(serialize_part(own.mesh), 0);
+  gather_parts(comm, own, parts);
   out.totals = sum_over_ranks(comm, mine);
   out.totals.before = before;
   std::vector<int32_t> joined;
   if (root) {
-    for (size_t r = 0; r < parts.size(); ++r) parts[r].mesh = deserialize_part(optimized[r]);
     joined = join_parts(mesh, part_of_tet, parts);
     parts.clear();
   }

@@ -2,6 +2,7 @@
 #include "parallel/mesh_scatter.hpp"
 
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "parallel/write_parts.hpp"
@@ -25,10 +26,10 @@ std::vector<int32_t> partition_tets(const Comm& comm, const TetMesh& mesh) {
       .destination;
 }
 
-MeshPart scatter_parts(const Comm& comm, const std::vector<MeshPart>& parts) {
+MeshPart scatter_parts(const Comm& comm, std::vector<MeshPart>& parts) {
   std::vector<char> send;
   std::vector<int64_t> send_bytes(static_cast<size_t>(comm.size()), 0);
-  for (size_t r = 0; r < parts.size(); ++r) {
+  for (size_t r = 1; r < parts.size(); ++r) {
     const std::string bytes = serialize_part(parts[r].mesh);
     send.insert(send.end(), bytes.begin(), bytes.end());
     send.insert(send.end(), parts[r].on_cut.begin(), parts[r].on_cut.end());
@@ -38,11 +39,29 @@ MeshPart scatter_parts(const Comm& comm, const std::vector<MeshPart>& parts) {
   comm.idle_barrier();  // the ranks with no part to send sleep while rank 0 writes them
   const std::vector<char> recv = comm.all_to_all(send, send_bytes, recv_bytes);
   MeshPart own;
+  if (comm.rank() == 0) {
+    if (!parts.empty()) {
+      own.mesh = std::move(parts[0].mesh);
+      parts[0].mesh = TetMesh{};
+      own.on_cut = parts[0].on_cut;
+    }
+    return own;
+  }
   own.mesh = deserialize_part(std::string(recv.begin(), recv.end()));
   const size_t flags = own.mesh.num_vertices();
   PARTET_ASSERT(recv.size() >= flags, "truncated part");
   own.on_cut.assign(recv.end() - static_cast<ptrdiff_t>(flags), recv.end());
   return own;
+}
+
+void gather_parts(const Comm& comm, MeshPart& own, std::vector<MeshPart>& parts) {
+  const bool root = comm.rank() == 0;
+  const std::vector<std::string> images = comm.gather(root ? std::string() : serialize_part(own.mesh), 0);
+  if (!root) return;
+  PARTET_ASSERT(images.size() == parts.size(), "one part per rank");
+  parts[0].mesh = std::move(own.mesh);
+  own.mesh = TetMesh{};
+  for (size_t r = 1; r < parts.size(); ++r) parts[r].mesh = deserialize_part(images[r]);
 }
 
 }  // namespace partet
