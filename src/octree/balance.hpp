@@ -22,8 +22,9 @@
 // the same argument: a leaf's siblings share its parent, hence its block).
 // Cost: the blocks of the parents sharing a grandparent are gathered in one
 // bit mask over the grandparent's (2R + 2)^3 block (so shared octants are
-// emitted once), and the required octants are sorted once per level:
-// O(n log n) for n leaves, times the block's size.
+// emitted once), a table of recent keys drops most repeats between
+// neighbouring grandparents' blocks, and the required octants are sorted
+// once per level: O(n log n) for n leaves, times the block's size.
 //
 // The required octants of a set of leaves are the union of each leaf's own
 // (they depend on the leaf alone), so a distributed tree is balanced by
