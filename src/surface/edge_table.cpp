@@ -1,20 +1,21 @@
 // build_edge_table: sort half-edges by undirected key, group, link twins.
 #include "surface/edge_table.hpp"
 
-#include <algorithm>
 #include <utility>
+
+#include "core/keyed_sort.hpp"
 
 namespace partet {
 
 EdgeTable build_edge_table(const SurfaceMesh& surface) {
   const size_t nh = surface.tris.size();
-  std::vector<std::pair<uint64_t, uint32_t>> keyed(nh);
+  std::vector<KeyedIndex> keyed(nh);
   for (uint32_t h = 0; h < nh; ++h) {
     uint64_t a = half_edge_from(surface, h), b = half_edge_to(surface, h);
     if (a > b) std::swap(a, b);
     keyed[h] = {(a << 32) | b, h};
   }
-  std::sort(keyed.begin(), keyed.end());
+  sort_keyed_in_index_order(keyed);
 
   EdgeTable table;
   table.half_edges.resize(nh);
