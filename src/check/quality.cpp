@@ -228,6 +228,15 @@ void measure_block(ShapeBlock& s) {
   }
 }
 
+// Puts a tet's corners in the block's next column; true when that fills it.
+bool add_to_block(ShapeBlock& s, const double* const p[4]) {
+  for (int j = 0; j < 4; ++j) {
+    s.points[s.n][j] = p[j];
+    for (int i = 0; i < 3; ++i) s.corner[3 * j + i][s.n] = p[j][i];
+  }
+  return ++s.n == kShapeBlock;
+}
+
 }  // namespace
 
 QualityStats measure_quality(const TetMesh& mesh) {
@@ -297,11 +306,7 @@ QualityStats measure_quality(const TetMesh& mesh) {
     const double* p[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])};
     if (!finite_point(p[0]) || !finite_point(p[1]) || !finite_point(p[2]) || !finite_point(p[3]))
       continue;
-    for (int j = 0; j < 4; ++j) {
-      s.points[s.n][j] = p[j];
-      for (int i = 0; i < 3; ++i) s.corner[3 * j + i][s.n] = p[j][i];
-    }
-    if (++s.n == kShapeBlock) add_up();
+    if (add_to_block(s, p)) add_up();
   }
   add_up();
 
@@ -335,9 +340,8 @@ std::vector<uint8_t> tets_under_angle(const TetMesh& mesh, double degrees) {
   };
   for (size_t t = 0; t < mesh.num_tets(); ++t) {
     const uint32_t* v = &mesh.tets[4 * t];
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 3; ++i) s.corner[3 * j + i][s.n] = mesh.point(v[j])[i];
-    if (++s.n == kShapeBlock) mark();
+    const double* p[4] = {mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3])};
+    if (add_to_block(s, p)) mark();
   }
   mark();
   return under;

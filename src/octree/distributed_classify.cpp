@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-
 namespace partet {
 
 ClassCounts classify_distributed(const Comm& comm, DistributedOctree& tree, const SurfaceMesh& surface,

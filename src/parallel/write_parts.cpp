@@ -94,9 +94,13 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
   });
 }
 
-void write_whole_as_pieces(const TetMesh& whole, const std::string& path, const WriteOptions& options,
-                           const Comm& comm) {
-  if (comm.size() == 1) return write_distributed_mesh(whole, path, options, comm);
+std::vector<int64_t> write_whole_as_pieces(const TetMesh& whole, const std::string& path,
+                                           const WriteOptions& options, const Comm& comm) {
+  std::vector<int64_t> tets_per_piece;
+  if (comm.size() == 1) {
+    write_distributed_mesh(whole, path, options, comm);
+    return {static_cast<int64_t>(whole.num_tets())};
+  }
   collective_step(comm, [&] {
     require_extension(path, {"pvtu"}, "volume mesh in pieces");
     if (comm.rank() != 0) return;
@@ -105,12 +109,15 @@ void write_whole_as_pieces(const TetMesh& whole, const std::string& path, const 
     std::vector<uint32_t> local(whole.num_vertices(), UINT32_MAX);
     std::vector<std::string> names;
     for (size_t r = 0; r < pieces; ++r) {
-      const TetMesh piece = run_piece(whole, r * n / pieces, (r + 1) * n / pieces, local);
-      write_file_atomic(pvtu_piece_path(path, static_cast<int>(r)), format_vtu(piece));
-      names.push_back(file_basename(pvtu_piece_path(path, static_cast<int>(r))));
+      const size_t begin = r * n / pieces, end = (r + 1) * n / pieces;
+      const std::string piece_path = pvtu_piece_path(path, static_cast<int>(r));
+      write_file_atomic(piece_path, format_vtu(run_piece(whole, begin, end, local)));
+      names.push_back(file_basename(piece_path));
+      tets_per_piece.push_back(static_cast<int64_t>(end - begin));
     }
     write_file_atomic(path, format_pvtu(names, true));
   });
+  return tets_per_piece;
 }
 
 }  // namespace partet

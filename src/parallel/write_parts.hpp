@@ -7,7 +7,9 @@
 // Collective; failures are agreed on by all ranks.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/tet_mesh.hpp"
 #include "io/mesh_file.hpp"
@@ -25,8 +27,9 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
 // whole-mesh index as global id (a .vtu piece holds no boundary
 // triangles). Cutting the mesh by inertial bisection and sending the
 // pieces out to be written took longer than writing them all here
-// (docs/decisions.md, "A whole mesh's pieces written by rank 0").
-void write_whole_as_pieces(const TetMesh& whole, const std::string& path, const WriteOptions& options,
+// (docs/decisions.md, "A whole mesh's pieces written by rank 0"). Returns
+// the pieces' tet counts on rank 0 (empty elsewhere).
+std::vector<int64_t> write_whole_as_pieces(const TetMesh& whole, const std::string& path, const WriteOptions& options,
                            const Comm& comm);
 
 // Flat byte image of a part (for gathering) and back.

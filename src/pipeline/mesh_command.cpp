@@ -601,18 +601,12 @@ int mesh_once(const MeshOptions& options, const Comm& comm, const Log& log, cons
         // On P > 1 ranks a .pvtu is written in balanced pieces, one per
         // rank, by rank 0, which holds the whole mesh.
         const bool pieces = distributed && file_extension(options.output) == "pvtu";
-        if (pieces)
-          write_whole_as_pieces(s.mesh, options.output, {options.ascii}, comm);
-        else
-          write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
         ojson c;
         c["tets"] = s.mesh.num_tets();
         if (pieces) {
-          const size_t n = s.mesh.num_tets(), p = static_cast<size_t>(comm.size());
-          std::vector<int64_t> per_piece;
-          for (size_t r = 0; r < p; ++r) per_piece.push_back(static_cast<int64_t>((r + 1) * n / p - r * n / p));
-          c["tets per rank"] = per_piece;
+          c["tets per rank"] = write_whole_as_pieces(s.mesh, options.output, {options.ascii}, comm);
         } else {
+          write_distributed_mesh(s.mesh, options.output, {options.ascii}, comm);
           c["vertices"] = s.mesh.num_vertices();
         }
         c["file"] = options.output;
