@@ -7,7 +7,18 @@
 // in the coordinate projection that keeps the triangle non-degenerate (an
 // affine bijection of the plane, so it preserves incidence exactly). Two
 // triangles meet iff an edge of one meets the other.
+//
+// Two triangles of one surface are first tried for a cheap proof that they
+// do not conflict: the filtered orientations against a plane, then a
+// separating line in one coordinate projection (any projection: triangles
+// whose projections are disjoint are disjoint). On a refined surface most
+// neighbours are exactly coplanar, where orient3d can only answer by its
+// exact path; the projected tests, all exact orient2d, decide them in the
+// filter. Only pairs neither proof clears take the full test, so the
+// answers are those of the full test alone.
 #include "core/intersections.hpp"
+
+#include <cmath>
 
 #include "core/predicates.hpp"
 
@@ -99,6 +110,64 @@ bool triangles_intersect_coplanar(const double* const a[3], const double* const 
          point_in_triangle_2d(b[0], a[0], a[1], a[2], drop);
 }
 
+// The coordinate axis along which the normal of triangle abc is largest,
+// in floating point: the projection dropping it is the least distorted.
+// The tests below verify exactly whatever they need of it.
+int dominant_axis(const double* a, const double* b, const double* c) {
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+  const double n[3] = {std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz), std::fabs(ux * vy - uy * vx)};
+  return n[0] >= n[1] ? (n[0] >= n[2] ? 0 : 2) : (n[1] >= n[2] ? 1 : 2);
+}
+
+// In the projection dropping `drop`: the line through an edge of t has the
+// three vertices of o strictly on the side away from t (t degenerate
+// there: on either side). Then the projections, so the triangles, are
+// disjoint.
+bool edge_separates_2d(const double* const t[3], const double* const o[3], int drop) {
+  const int side = orient2d_projected(t[0], t[1], t[2], drop);
+  for (int i = 0; i < 3; ++i) {
+    const double* p = t[i];
+    const double* q = t[(i + 1) % 3];
+    const int first = orient2d_projected(p, q, o[0], drop);
+    if (first == 0 || first == side) continue;
+    if (orient2d_projected(p, q, o[1], drop) == first && orient2d_projected(p, q, o[2], drop) == first)
+      return true;
+  }
+  return false;
+}
+
+// Triangles a and b, sharing no vertex, are proved disjoint: b strictly on
+// one side of a's plane by the filter alone, or a separating edge in the
+// projection that suits a.
+bool disjoint_cheaply(const double* const a[3], const double* const b[3]) {
+  const PlaneSide plane(a[0], a[1], a[2]);
+  const int s0 = plane.filtered(b[0]);
+  if (s0 != 0 && plane.filtered(b[1]) == s0 && plane.filtered(b[2]) == s0) return true;
+  const int drop = dominant_axis(a[0], a[1], a[2]);
+  return edge_separates_2d(a, b, drop) || edge_separates_2d(b, a, drop);
+}
+
+// Triangles (v, a1, a2) and (v, b1, b2) are proved to meet only in v: in the
+// projection that suits the first, both project to proper triangles (so the
+// projection is one to one on each) and the line through v along an edge of
+// one has the other's two far vertices strictly on the side away from it.
+// Then the projections meet only in v's image, and the triangles only in v.
+bool meet_only_at_apex_2d(const double* v, const double* a1, const double* a2, const double* b1,
+                          const double* b2) {
+  const int drop = dominant_axis(v, a1, a2);
+  const int sa = orient2d_projected(v, a1, a2, drop);
+  const int sb = orient2d_projected(v, b1, b2, drop);
+  if (sa == 0 || sb == 0) return false;
+  // Along v->x, with the cone's own far vertex on side `own`: both of the
+  // other's far vertices on the side -own.
+  auto clears = [drop](const double* v0, const double* x, int own, const double* p, const double* q) {
+    return orient2d_projected(v0, x, p, drop) == -own && orient2d_projected(v0, x, q, drop) == -own;
+  };
+  return clears(v, a1, sa, b1, b2) || clears(v, a2, -sa, b1, b2) || clears(v, b1, sb, a1, a2) ||
+         clears(v, b2, -sb, a1, a2);
+}
+
 }  // namespace
 
 bool points_collinear(const double* a, const double* b, const double* c) {
@@ -139,7 +208,7 @@ bool surface_triangles_conflict(const double* const a[3], const uint32_t ia[3],
       }
     }
   }
-  if (shared == 0) return triangles_intersect(a, b);
+  if (shared == 0) return !disjoint_cheaply(a, b) && triangles_intersect(a, b);
   if (shared >= 3) return true;
   if (shared == 1) {
     int i = 0;
@@ -149,6 +218,10 @@ bool surface_triangles_conflict(const double* const a[3], const uint32_t ia[3],
     const double* a2 = a[(i + 2) % 3];
     const double* b1 = b[(j + 1) % 3];
     const double* b2 = b[(j + 2) % 3];
+    const PlaneSide plane_b(b[0], b[1], b[2]);
+    const int fa1 = plane_b.filtered(a1);
+    if (fa1 != 0 && plane_b.filtered(a2) == fa1) return false;
+    if (meet_only_at_apex_2d(a[i], a1, a2, b1, b2)) return false;
     // a1, a2 strictly on one side of b's plane: a meets that plane only in
     // the shared vertex (the common case on a smooth surface); and vice versa.
     const int sa1 = orient3d(b[0], b[1], b[2], a1);
@@ -165,13 +238,21 @@ bool surface_triangles_conflict(const double* const a[3], const uint32_t ia[3],
   while (match_a[apex_a] >= 0) ++apex_a;
   int apex_b = 0;
   while (apex_b == match_a[0] || apex_b == match_a[1] || apex_b == match_a[2]) ++apex_b;
-  if (orient3d(a[0], a[1], a[2], b[apex_b]) != 0) return false;
+  // The apexes strictly on opposite sides of the edge's line in a
+  // projection that keeps a proper: no conflict. Coplanar, they are on
+  // opposite sides in their plane too (the projection is one to one on it);
+  // not coplanar, the triangles meet only along the edge anyway.
   const double* u = a[(apex_a + 1) % 3];
   const double* w = a[(apex_a + 2) % 3];
-  const int drop = projection_axis(u, w, a[apex_a]);
-  const int side_a = orient2d_projected(u, w, a[apex_a], drop);
+  int drop = dominant_axis(u, w, a[apex_a]);
+  int side_a = orient2d_projected(u, w, a[apex_a], drop);
+  if (side_a == 0) {
+    drop = projection_axis(u, w, a[apex_a]);
+    side_a = orient2d_projected(u, w, a[apex_a], drop);
+  }
   const int side_b = orient2d_projected(u, w, b[apex_b], drop);
-  return side_a * side_b >= 0;
+  if (side_a * side_b < 0) return false;
+  return orient3d(a[0], a[1], a[2], b[apex_b]) == 0;
 }
 
 }  // namespace partet

@@ -1,7 +1,8 @@
 // Exact intersection tests: hand-made touching, crossing, coplanar and
 // near-miss cases, the surface rules for shared vertices and edges, and
-// random small-integer triangles against an independent separating-axis
-// oracle, under symmetries and exact transformations.
+// random small-integer triangles (apart, or sharing a vertex or an edge)
+// against independent oracles in integers, under symmetries and exact
+// transformations.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -350,6 +351,53 @@ TEST(Intersections, RandomSegmentTriangleMatchesOracle) {
   }
   EXPECT_GT(hits, 600);
   EXPECT_LT(hits, 3400);
+}
+
+// Two triangles of a surface sharing a vertex or an edge, against oracles in
+// integers: with a shared vertex v they conflict iff an edge away from v of
+// one meets the other; with a shared edge uw (apexes p and q) iff q lies in
+// the plane of u, w, p on p's side of line uw or on it. Small coordinates,
+// half of the cases flattened onto one plane, where the surface test's
+// projected shortcuts must agree with its full test.
+TEST(Intersections, RandomSharedVertexAndEdgeMatchOracle) {
+  std::mt19937_64 rng(37);
+  std::uniform_int_distribution<int> coord(0, 4);
+  int tested = 0;
+  int hits[2] = {0, 0};
+  while (tested < 8000) {
+    const int shared = 1 + tested % 2;
+    I a[3], b[3];
+    for (auto* t : {&a, &b})
+      for (auto& p : *t)
+        for (auto& x : p) x = coord(rng);
+    b[0] = a[0];
+    if (shared == 2) b[1] = a[1];
+    if (tested % 4 < 2)
+      for (auto* t : {&a, &b})
+        for (auto& p : *t) p[(tested / 4) % 3] = 2;
+    if (cross(sub(a[1], a[0]), sub(a[2], a[0])) == I{0, 0, 0}) continue;
+    if (cross(sub(b[1], b[0]), sub(b[2], b[0])) == I{0, 0, 0}) continue;
+    ++tested;
+    bool expected;
+    if (shared == 1) {
+      const I sa[2] = {a[1], a[2]}, sb[2] = {b[1], b[2]};
+      expected = oracle_segment_triangle(sa, b) || oracle_segment_triangle(sb, a);
+    } else {
+      const I n = cross(sub(a[1], a[0]), sub(a[2], a[0]));
+      expected = dot(n, sub(b[2], a[0])) == 0 && dot(cross(sub(a[1], a[0]), sub(b[2], a[0])), n) >= 0;
+    }
+    hits[shared - 1] += expected;
+    for (int variant : {0, 1, 6, 10, 13}) {
+      Tri s{{transform(a[0], variant), transform(a[1], variant), transform(a[2], variant)}, {0, 1, 2}};
+      Tri t{{transform(b[0], variant), transform(b[1], variant), transform(b[2], variant)},
+            {0, shared == 2 ? 1u : 3u, 4}};
+      ASSERT_EQ(conflict_all_orders(s, t), expected) << tested << " v" << variant;
+    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_GT(hits[k], 400) << "shared " << k + 1;
+    EXPECT_LT(hits[k], 3600) << "shared " << k + 1;
+  }
 }
 
 }  // namespace
