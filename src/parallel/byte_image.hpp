@@ -40,4 +40,18 @@ std::vector<T> get_array(const std::string& in, size_t& pos) {
   return v;
 }
 
+// Appends the array at `pos` to `out` (one copy), and moves past it.
+template <class T>
+void append_array(const std::string& in, size_t& pos, std::vector<T>& out) {
+  uint64_t n = 0;
+  PARTET_ASSERT(pos + sizeof n <= in.size(), "truncated byte image");
+  std::memcpy(&n, in.data() + pos, sizeof n);
+  pos += sizeof n;
+  PARTET_ASSERT(n <= (in.size() - pos) / sizeof(T), "truncated byte image");
+  const size_t before = out.size();
+  out.resize(before + n);
+  if (n > 0) std::memcpy(out.data() + before, in.data() + pos, n * sizeof(T));
+  pos += n * sizeof(T);
+}
+
 }  // namespace partet

@@ -65,45 +65,61 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
   for (size_t r = 0; r < images.size(); ++r) {
     size_t pos = 0;
     const std::string& image = images[r];
-    for (uint64_t k : get_array<uint64_t>(image, pos)) tree.key.push_back(k);
-    for (uint8_t l : get_array<uint8_t>(image, pos)) tree.level.push_back(l);
-    for (LeafClass c : get_array<LeafClass>(image, pos)) tree.cls.push_back(c);
-    for (uint8_t c : get_array<uint8_t>(image, pos)) core.face_case.push_back(c);
+    append_array(image, pos, tree.key);
+    append_array(image, pos, tree.level);
+    append_array(image, pos, tree.cls);
+    append_array(image, pos, core.face_case);
     const size_t leaves_before = tets_of_leaf.size();
-    for (uint32_t n : get_array<uint32_t>(image, pos)) tets_of_leaf.push_back(n);
+    append_array(image, pos, tets_of_leaf);
     parts[r].xyz = get_array<double>(image, pos);
     parts[r].tets = get_array<uint32_t>(image, pos);
     parts[r].ids = get_array<uint64_t>(image, pos);
     core.leaves_templated += get_array<uint64_t>(image, pos).at(0);
     const std::vector<uint32_t> first = get_array<uint32_t>(image, pos);
-    const std::vector<uint32_t> tris = get_array<uint32_t>(image, pos);
     if (!rows) continue;
     PARTET_ASSERT(first.size() == tets_of_leaf.size() - leaves_before + 1,
                   "gathered triangle rows disagree with the leaves");
     if (rows->first.empty()) rows->first.push_back(0);
     const uint32_t base = rows->first.back();
     for (size_t i = 1; i < first.size(); ++i) rows->first.push_back(base + first[i]);
-    rows->tris.insert(rows->tris.end(), tris.begin(), tris.end());
+    append_array(image, pos, rows->tris);
   }
   tree.owner.assign(tree.size(), 0);
   PARTET_ASSERT(std::is_sorted(tree.key.begin(), tree.key.end()), "gathered leaves out of order");
   PARTET_ASSERT(core.face_case.size() == kLeafFaces * tree.size() && tets_of_leaf.size() == tree.size(),
                 "gathered core parts disagree with the leaves");
 
-  // Vertices: the union of the global ids, ascending.
+  // Vertices: the union of the parts' global ids (each ascending), merged
+  // in one pass over the parts' heads (a scan of the P heads per vertex);
+  // each part's vertex gets its place in the union as it is taken.
   std::vector<uint64_t>& ids = core.mesh.global_ids;
-  for (const Part& p : parts) ids.insert(ids.end(), p.ids.begin(), p.ids.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<std::vector<uint32_t>> index(parts.size());
+  std::vector<size_t> at(parts.size(), 0);
+  size_t total = 0;
+  for (size_t r = 0; r < parts.size(); ++r) {
+    PARTET_ASSERT(std::is_sorted(parts[r].ids.begin(), parts[r].ids.end()), "a core part's ids out of order");
+    index[r].resize(parts[r].ids.size());
+    total += parts[r].ids.size();
+  }
+  ids.reserve(total);
+  for (;;) {
+    size_t low = parts.size();
+    for (size_t r = 0; r < parts.size(); ++r)
+      if (at[r] < parts[r].ids.size() && (low == parts.size() || parts[r].ids[at[r]] < parts[low].ids[at[low]]))
+        low = r;
+    if (low == parts.size()) break;
+    const uint64_t id = parts[low].ids[at[low]];
+    if (ids.empty() || ids.back() != id) ids.push_back(id);
+    index[low][at[low]++] = static_cast<uint32_t>(ids.size() - 1);
+  }
   core.mesh.xyz.resize(3 * ids.size());
-  for (const Part& p : parts) {
-    std::vector<uint32_t> index(p.ids.size());
-    for (size_t v = 0; v < p.ids.size(); ++v) {
-      const size_t g = static_cast<size_t>(std::lower_bound(ids.begin(), ids.end(), p.ids[v]) - ids.begin());
-      index[v] = static_cast<uint32_t>(g);
-      std::copy_n(&p.xyz[3 * v], 3, &core.mesh.xyz[3 * g]);
-    }
-    for (uint32_t v : p.tets) core.mesh.tets.push_back(index.at(v));
+  size_t tet_entries = 0;
+  for (const Part& p : parts) tet_entries += p.tets.size();
+  core.mesh.tets.reserve(tet_entries);
+  for (size_t r = 0; r < parts.size(); ++r) {
+    const Part& p = parts[r];
+    for (size_t v = 0; v < p.ids.size(); ++v) std::copy_n(&p.xyz[3 * v], 3, &core.mesh.xyz[3 * size_t{index[r][v]}]);
+    for (uint32_t v : p.tets) core.mesh.tets.push_back(index[r].at(v));
   }
   core.leaf_first_tet.assign(tree.size() + 1, 0);
   for (size_t i = 0; i < tree.size(); ++i) core.leaf_first_tet[i + 1] = core.leaf_first_tet[i] + tets_of_leaf[i];
