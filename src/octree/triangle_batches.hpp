@@ -30,10 +30,11 @@ inline bool leaf_meets_region(const uint32_t* a, uint32_t edge, const uint32_t* 
 // `region_of(t)` gives triangle t's region: a value with members lo[3] and
 // hi[3] (grid cells, inclusive) and whatever else the caller keeps per
 // triangle. `visit(batch, leaves)` gets each batch (regions, in tree order)
-// and the leaves over their union (ascending).
+// and the leaves over their union (ascending); with `only`, the members of
+// `only` among them.
 template <class RegionOf, class Visit>
 void for_each_triangle_batch(const std::vector<uint32_t>& order, const LeafRangeQuery& query, RegionOf region_of,
-                             Visit visit) {
+                             Visit visit, const LeafSet* only = nullptr) {
   using Region = decltype(region_of(uint32_t{0}));
   std::vector<Region> batch;
   std::vector<size_t> leaves;
@@ -58,7 +59,11 @@ void for_each_triangle_batch(const std::vector<uint32_t>& order, const LeafRange
       batch.push_back(r);
       ++next;
     }
-    query.leaves_in_range(lo, hi, leaves);
+    if (only) {
+      query.leaves_in_range(lo, hi, leaves, *only);
+    } else {
+      query.leaves_in_range(lo, hi, leaves);
+    }
     visit(batch, leaves);
   }
 }
