@@ -66,9 +66,19 @@ void TetTopology::link_faces() {
   // The faces not yet matched, in an open-addressing table (linear
   // probing, at most half full) that a face leaves when its twin comes:
   // the tets go in slot order, which follows space (tet_order.hpp), so
-  // the table holds about the boundary faces and a frontier, and its
-  // lookups stay in cache where the tets of every vertex, gathered and
-  // sorted (16 bytes per tet), missed it on every vertex's star.
+  // the table holds the frontier of that order and its lookups stay nearer
+  // in cache than the tets of every vertex, gathered and sorted (16 bytes
+  // per tet), which missed it on every vertex's star. The faces on three
+  // surface vertices are set aside and matched after, sorted: the surface
+  // triangles among them never find a twin and only grew the table
+  // (femur r2: 124,768 triangles; link_faces 0.43 -> 0.33 s).
+  std::vector<uint8_t> on_surface(mesh_.num_vertices(), 0);
+  for (uint32_t v : mesh_.tris) on_surface[v] = 1;
+  struct Aside {
+    FaceKey key;
+    uint32_t code;
+  };
+  std::vector<Aside> aside;
   struct Open {
     FaceKey key;
     uint32_t code;
@@ -96,6 +106,10 @@ void TetTopology::link_faces() {
     for (int f = 0; f < 4; ++f) {
       const uint32_t code = 4 * t + f;
       const FaceKey key = face_key(tet(t), f);
+      if (on_surface[key[0]] && on_surface[key[1]] && on_surface[key[2]]) {
+        aside.push_back({key, code});
+        continue;
+      }
       size_t s = home(key);
       const auto same = [&](const FaceKey& other) {
         return other[0] == key[0] && other[1] == key[1] && other[2] == key[2];
@@ -130,6 +144,14 @@ void TetTopology::link_faces() {
       table[hole].key[0] = kNone;
       --used;
     }
+  }
+  std::sort(aside.begin(), aside.end(), [](const Aside& x, const Aside& y) { return x.key < y.key; });
+  for (size_t i = 0; i + 1 < aside.size(); ++i) {
+    if (aside[i].key != aside[i + 1].key) continue;
+    PARTET_ASSERT(outward_sorted(aside[i].code) != outward_sorted(aside[i + 1].code),
+                  "two tets of the mesh to optimize lie on the same side of a face");
+    link(aside[i].code, aside[i + 1].code);
+    ++i;
   }
 }
 
