@@ -71,7 +71,8 @@ void TetTopology::link_faces() {
   // per tet), which missed it on every vertex's star. The faces on three
   // surface vertices are set aside and matched after, sorted: the surface
   // triangles among them never find a twin and only grew the table
-  // (femur r2: 124,768 triangles; link_faces 0.43 -> 0.33 s).
+  // (femur r2: 124,768 triangles; link_faces 0.43 -> 0.34 s, 0.28 s with
+  // the prefetches below).
   std::vector<uint8_t> on_surface(mesh_.num_vertices(), 0);
   for (uint32_t v : mesh_.tris) on_surface[v] = 1;
   struct Aside {
@@ -101,16 +102,36 @@ void TetTopology::link_faces() {
     const int inversions = (v[order[0]] > v[order[1]]) + (v[order[1]] > v[order[2]]) + (v[order[0]] > v[order[2]]);
     return (inversions % 2 == 1) == (f % 2 == 0);
   };
-  for (uint32_t t = 0; t < slots(); ++t) {
-    if (!alive(t)) continue;
-    for (int f = 0; f < 4; ++f) {
-      const uint32_t code = 4 * t + f;
-      const FaceKey key = face_key(tet(t), f);
-      if (on_surface[key[0]] && on_surface[key[1]] && on_surface[key[2]]) {
-        aside.push_back({key, code});
-        continue;
+  // The faces go in chunks of kChunk tets: their keys and hashes first,
+  // each home slot prefetched, then matched in order, so that the chunk's
+  // table misses overlap instead of coming one after the other.
+  constexpr uint32_t kChunk = 16;
+  FaceKey keys[4 * kChunk];
+  uint64_t hashes[4 * kChunk];
+  uint32_t codes[4 * kChunk];
+  for (uint32_t first = 0; first < slots(); first += kChunk) {
+    const uint32_t last = std::min(slots(), first + kChunk);
+    uint32_t m = 0;
+    for (uint32_t t = first; t < last; ++t) {
+      if (!alive(t)) continue;
+      for (int f = 0; f < 4; ++f) {
+        const uint32_t code = 4 * t + static_cast<uint32_t>(f);
+        const FaceKey key = face_key(tet(t), f);
+        if (on_surface[key[0]] && on_surface[key[1]] && on_surface[key[2]]) {
+          aside.push_back({key, code});
+          continue;
+        }
+        keys[m] = key;
+        hashes[m] = hash_triple(key[0], key[1], key[2]);
+        codes[m] = code;
+        __builtin_prefetch(&table[hashes[m] & (capacity - 1)]);
+        ++m;
       }
-      size_t s = home(key);
+    }
+    for (uint32_t i = 0; i < m; ++i) {
+      const FaceKey& key = keys[i];
+      const uint32_t code = codes[i];
+      size_t s = hashes[i] & (capacity - 1);
       const auto same = [&](const FaceKey& other) {
         return other[0] == key[0] && other[1] == key[1] && other[2] == key[2];
       };
@@ -123,9 +144,9 @@ void TetTopology::link_faces() {
           capacity *= 2;
           for (const Open& e : old) {
             if (e.key[0] == kNone) continue;
-            size_t i = home(e.key);
-            while (table[i].key[0] != kNone) i = (i + 1) & (capacity - 1);
-            table[i] = e;
+            size_t j = home(e.key);
+            while (table[j].key[0] != kNone) j = (j + 1) & (capacity - 1);
+            table[j] = e;
           }
         }
         continue;
