@@ -1,8 +1,11 @@
 // Point-to-triangle closest point and distance in doubles (Voronoi regions,
 // after Ericson, Real-Time Collision Detection §5.1.5), for size, spacing
 // and search-direction heuristics only: geometric decisions use the exact
-// predicates.
+// predicates. TriangleBoxReach rejects far points before the distance.
 #pragma once
+
+#include <algorithm>
+#include <cmath>
 
 namespace partet {
 
@@ -55,5 +58,35 @@ inline double squared_point_triangle_distance(const double* p, const double* a, 
   const double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
   return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
 }
+
+// A cheap rejection before squared_point_triangle_distance: whether a
+// point lies farther than `reach` from triangle abc's bounding box, by a
+// margin of 1e-9 of the coordinates' size, far above that distance's
+// rounding, so that the distance would come out at least reach too.
+class TriangleBoxReach {
+ public:
+  TriangleBoxReach(const double* a, const double* b, const double* c, double reach) {
+    double scale = reach;
+    for (int k = 0; k < 3; ++k) {
+      box_[k] = std::min({a[k], b[k], c[k]});
+      box_[k + 3] = std::max({a[k], b[k], c[k]});
+      scale = std::max({scale, std::fabs(box_[k]), std::fabs(box_[k + 3])});
+    }
+    const double far = reach + 1e-9 * scale;
+    far2_ = far * far;
+  }
+  bool excludes(const double* p) const {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::max({box_[k] - p[k], p[k] - box_[k + 3], 0.0});
+      d2 += d * d;
+    }
+    return d2 > far2_;
+  }
+
+ private:
+  double box_[6];  // min xyz, max xyz
+  double far2_;
+};
 
 }  // namespace partet

@@ -5,7 +5,6 @@
 #include "front/gap_vertices.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <optional>
 
 #include "core/distance.hpp"
@@ -46,39 +45,21 @@ GapVertices gap_vertices(const LinearOctree& tree, const RootCube& root, const S
 
   // Each triangle vetoes the centres within its reach, searched by batches
   // of triangles (triangle_batches.hpp).
-  // A centre farther from a triangle's box than its reach (with a margin
-  // far above the rounding of the distance below) is not vetoed by it: a
-  // cheap test that spares most of the distances.
+  // A centre farther from a triangle's box than its reach is not vetoed by
+  // it (TriangleBoxReach): a cheap test that spares most of the distances.
   struct Reach {
     uint32_t t;
     double reach;
-    double far2;  // squared distance to the box beyond which no veto can come
-    double box[6];
+    TriangleBoxReach box;
     uint32_t lo[3], hi[3];
   };
   const auto region_of = [&](uint32_t t) {
     const uint32_t* v = &surface.tris[3 * size_t{t}];
-    Reach r;
-    r.t = t;
-    r.reach = gap * (vertex_size[v[0]] + vertex_size[v[1]] + vertex_size[v[2]]) / 3;
-    triangle_grid_range(root, surface.point(v[0]), surface.point(v[1]), surface.point(v[2]), r.reach, r.lo, r.hi);
-    double scale = r.reach;
-    for (int k = 0; k < 3; ++k) {
-      r.box[k] = std::min({surface.point(v[0])[k], surface.point(v[1])[k], surface.point(v[2])[k]});
-      r.box[k + 3] = std::max({surface.point(v[0])[k], surface.point(v[1])[k], surface.point(v[2])[k]});
-      scale = std::max({scale, std::fabs(r.box[k]), std::fabs(r.box[k + 3])});
-    }
-    const double far = r.reach + 1e-9 * scale;
-    r.far2 = far * far;
+    const double *a = surface.point(v[0]), *b = surface.point(v[1]), *c = surface.point(v[2]);
+    const double reach = gap * (vertex_size[v[0]] + vertex_size[v[1]] + vertex_size[v[2]]) / 3;
+    Reach r{t, reach, TriangleBoxReach(a, b, c, reach), {}, {}};
+    triangle_grid_range(root, a, b, c, reach, r.lo, r.hi);
     return r;
-  };
-  const auto beyond_box = [](const double* p, const Reach& r) {
-    double d2 = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double d = std::max({r.box[k] - p[k], p[k] - r.box[k + 3], 0.0});
-      d2 += d * d;
-    }
-    return d2 > r.far2;
   };
   const LeafRangeQuery query(tree);
   for_each_triangle_batch(triangles_in_tree_order(surface, root), query, region_of,
@@ -92,7 +73,7 @@ GapVertices gap_vertices(const LinearOctree& tree, const RootCube& root, const S
       double centre[3];
       leaf_centre(tree, root, leaf, lattice, centre);
       for (const Reach& r : batch) {
-        if (!leaf_meets_region(a, edge, r.lo, r.hi) || beyond_box(centre, r)) continue;
+        if (!leaf_meets_region(a, edge, r.lo, r.hi) || r.box.excludes(centre)) continue;
         const uint32_t* v = &surface.tris[3 * size_t{r.t}];
         if (squared_point_triangle_distance(centre, surface.point(v[0]), surface.point(v[1]), surface.point(v[2])) <
             r.reach * r.reach) {

@@ -40,21 +40,6 @@ double squared_distance(const double* a, const double* b) {
   return sum;
 }
 
-// p lies farther than `reach` from the box of triangle abc, by a margin far
-// above the rounding of squared_point_triangle_distance: that distance is
-// then at least reach too, and need not be computed.
-bool beyond_box(const double* p, const double* a, const double* b, const double* c, double reach) {
-  double d2 = 0, scale = reach;
-  for (int k = 0; k < 3; ++k) {
-    const double lo = std::min({a[k], b[k], c[k]}), hi = std::max({a[k], b[k], c[k]});
-    const double d = std::max({lo - p[k], p[k] - hi, 0.0});
-    d2 += d * d;
-    scale = std::max({scale, std::fabs(lo), std::fabs(hi)});
-  }
-  const double far = reach + 1e-9 * scale;
-  return d2 > far * far;
-}
-
 // The area normals summed per vertex (outward: the surface is diagnosed).
 std::vector<double> vertex_normals(const SurfaceMesh& surface) {
   std::vector<double> normal(3 * surface.num_vertices(), 0.0);
@@ -136,7 +121,8 @@ size_t add_offset_vertices(const LinearOctree& tree, const RootCube& root, const
       for (uint32_t k = bins->first[near[l]]; k < bins->first[near[l] + 1] && free; ++k) {
         const uint32_t* v = &surface.tris[3 * size_t{bins->tris[k]}];
         const double *a = surface.point(v[0]), *b = surface.point(v[1]), *c = surface.point(v[2]);
-        free = beyond_box(p, a, b, c, clear) || squared_point_triangle_distance(p, a, b, c) >= clear * clear;
+        free = TriangleBoxReach(a, b, c, clear).excludes(p) ||
+               squared_point_triangle_distance(p, a, b, c) >= clear * clear;
       }
     for (size_t l = 0; l < near.size() && free; ++l)
       candidates.for_each(near[l], [&](uint32_t o) {

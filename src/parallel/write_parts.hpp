@@ -30,7 +30,7 @@ void write_distributed_mesh(const TetMesh& part, const std::string& path, const 
 // (docs/decisions.md, "A whole mesh's pieces written by rank 0"). Returns
 // the pieces' tet counts on rank 0 (empty elsewhere).
 std::vector<int64_t> write_whole_as_pieces(const TetMesh& whole, const std::string& path, const WriteOptions& options,
-                           const Comm& comm);
+                                           const Comm& comm);
 
 // Flat byte image of a part (for gathering) and back.
 std::string serialize_part(const TetMesh& part);

@@ -59,6 +59,8 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
     std::vector<double> xyz;
     std::vector<uint32_t> tets;
     std::vector<uint64_t> ids;
+    std::vector<uint32_t> index;  // per vertex, its place in the union
+    size_t taken = 0;             // vertices placed so far
   };
   std::vector<Part> parts(images.size());
   std::vector<uint32_t> tets_of_leaf;
@@ -93,33 +95,28 @@ void gather_tree_and_core(const Comm& comm, const LinearOctree& view, const Temp
   // in one pass over the parts' heads (a scan of the P heads per vertex);
   // each part's vertex gets its place in the union as it is taken.
   std::vector<uint64_t>& ids = core.mesh.global_ids;
-  std::vector<std::vector<uint32_t>> index(parts.size());
-  std::vector<size_t> at(parts.size(), 0);
-  size_t total = 0;
-  for (size_t r = 0; r < parts.size(); ++r) {
-    PARTET_ASSERT(std::is_sorted(parts[r].ids.begin(), parts[r].ids.end()), "a core part's ids out of order");
-    index[r].resize(parts[r].ids.size());
-    total += parts[r].ids.size();
+  size_t total = 0, tet_entries = 0;
+  for (Part& p : parts) {
+    PARTET_ASSERT(std::is_sorted(p.ids.begin(), p.ids.end()), "a core part's ids out of order");
+    p.index.resize(p.ids.size());
+    total += p.ids.size();
+    tet_entries += p.tets.size();
   }
   ids.reserve(total);
+  const auto head = [](const Part& p) { return p.ids[p.taken]; };
   for (;;) {
-    size_t low = parts.size();
-    for (size_t r = 0; r < parts.size(); ++r)
-      if (at[r] < parts[r].ids.size() && (low == parts.size() || parts[r].ids[at[r]] < parts[low].ids[at[low]]))
-        low = r;
-    if (low == parts.size()) break;
-    const uint64_t id = parts[low].ids[at[low]];
-    if (ids.empty() || ids.back() != id) ids.push_back(id);
-    index[low][at[low]++] = static_cast<uint32_t>(ids.size() - 1);
+    Part* low = nullptr;
+    for (Part& p : parts)
+      if (p.taken < p.ids.size() && (!low || head(p) < head(*low))) low = &p;
+    if (!low) break;
+    if (ids.empty() || ids.back() != head(*low)) ids.push_back(head(*low));
+    low->index[low->taken++] = static_cast<uint32_t>(ids.size() - 1);
   }
   core.mesh.xyz.resize(3 * ids.size());
-  size_t tet_entries = 0;
-  for (const Part& p : parts) tet_entries += p.tets.size();
   core.mesh.tets.reserve(tet_entries);
-  for (size_t r = 0; r < parts.size(); ++r) {
-    const Part& p = parts[r];
-    for (size_t v = 0; v < p.ids.size(); ++v) std::copy_n(&p.xyz[3 * v], 3, &core.mesh.xyz[3 * size_t{index[r][v]}]);
-    for (uint32_t v : p.tets) core.mesh.tets.push_back(index[r].at(v));
+  for (const Part& p : parts) {
+    for (size_t v = 0; v < p.ids.size(); ++v) std::copy_n(&p.xyz[3 * v], 3, &core.mesh.xyz[3 * size_t{p.index[v]}]);
+    for (uint32_t v : p.tets) core.mesh.tets.push_back(p.index.at(v));
   }
   core.leaf_first_tet.assign(tree.size() + 1, 0);
   for (size_t i = 0; i < tree.size(); ++i) core.leaf_first_tet[i + 1] = core.leaf_first_tet[i] + tets_of_leaf[i];
