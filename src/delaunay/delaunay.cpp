@@ -55,6 +55,15 @@ std::vector<uint32_t> insertion_order(const std::vector<double>& xyz, const BoxM
   return order;
 }
 
+// kEvenRest[i][j]: the k, l that make (i, j, k, l) an even permutation of
+// (0, 1, 2, 3), for i != j.
+constexpr int kEvenRest[4][4][2] = {
+    {{0, 0}, {2, 3}, {3, 1}, {1, 2}},
+    {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
+    {{1, 3}, {3, 0}, {0, 0}, {0, 1}},
+    {{2, 1}, {0, 2}, {1, 0}, {0, 0}},
+};
+
 class Builder {
  public:
   explicit Builder(const std::vector<double>& xyz) : n_(xyz.size() / 3) {
@@ -63,7 +72,10 @@ class Builder {
     const double *lo = grid.lo(), *hi = grid.hi();
     order_ = insertion_order(xyz, grid);
     out_.num_points = n_;
-    out_.xyz = xyz;
+    // The points in insertion order: the builder's vertex i is input point
+    // order_[i], so the points a cavity's tets reach sit close in memory.
+    points_.resize(n_ + 4);
+    for (size_t i = 0; i < n_; ++i) std::copy_n(&xyz[3 * size_t{order_[i]}], 3, points_[i].xyz);
     // Corners of the tet {x, y, z >= c - K, (x + y + z) - 3c <= 3K} around
     // the box's centre c, K = 4 extent: it holds the cube of half edge K
     // (whose corner c + (K, K, K) lies on its slanted face), so every
@@ -76,23 +88,30 @@ class Builder {
     const double big = 4 * std::max(extent, 1.0);
     const double corners[4][3] = {
         {-big, -big, -big}, {5 * big, -big, -big}, {-big, 5 * big, -big}, {-big, -big, 5 * big}};
-    for (const auto& c : corners)
-      for (int k = 0; k < 3; ++k) out_.xyz.push_back(centre[k] + c[k]);
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 3; ++k) points_[n_ + c].xyz[k] = centre[k] + corners[c][k];
     const uint32_t first = static_cast<uint32_t>(n_);
     new_tet(first, first + 1, first + 2, first + 3);
     for (int i = 0; i < 4; ++i) nb_[i] = kNoNeighbour;
   }
 
-  DelaunayTets run() {
+  DelaunayTets run(const std::vector<double>& xyz) {
     uint32_t last = 0;
-    for (uint32_t p : order_) last = insert(p, last);
+    for (uint32_t p = 0; p < n_; ++p) last = insert(p, last);
+    out_.xyz.reserve(3 * (n_ + 4));
+    out_.xyz = xyz;
+    for (size_t c = n_; c < n_ + 4; ++c) out_.xyz.insert(out_.xyz.end(), points_[c].xyz, points_[c].xyz + 3);
+    std::vector<Point>().swap(points_);
     compact();
     return std::move(out_);
   }
 
  private:
-  const double* pt(uint32_t v) const { return &out_.xyz[3 * size_t{v}]; }
+  const double* pt(uint32_t v) const { return points_[v].xyz; }
+  uint32_t& local(uint32_t v) { return points_[v].local; }
   const uint32_t* tet(uint32_t t) const { return &tv_[4 * size_t{t}]; }
+  uint32_t& neighbour(uint32_t t, int i) { return nb_[4 * size_t{t} + static_cast<size_t>(i)]; }
+  uint32_t& neighbour(uint32_t code) { return nb_[code]; }
 
   uint32_t new_tet(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
     uint32_t t;
@@ -103,8 +122,7 @@ class Builder {
       t = static_cast<uint32_t>(tv_.size() / 4);
       tv_.resize(tv_.size() + 4);
       nb_.resize(nb_.size() + 4);
-      mark_.push_back(0);
-      conflict_.push_back(0);
+      state_.push_back(kUnseen);
     }
     uint32_t* v = &tv_[4 * size_t{t}];
     v[0] = a, v[1] = b, v[2] = c, v[3] = d;
@@ -139,14 +157,14 @@ class Builder {
         if (i != entered && side(t, i, x) < 0) beyond = i;
       }
       if (beyond < 0) return t;
-      const uint32_t across = nb_[4 * size_t{t} + beyond];
+      const uint32_t across = neighbour(t, beyond);
       PARTET_ASSERT(across != kNoNeighbour, "a point lies outside the enclosing tet");
       t = across / 4;
       entered = static_cast<int>(across % 4);
     }
     for (uint32_t u = 0; u < tv_.size() / 4; ++u)
       if (tv_[4 * size_t{u}] != kDead && contains(u, x)) return u;
-    throw InternalError("Delaunay tetrahedralization: no tet holds point " + std::to_string(p));
+    throw InternalError("Delaunay tetrahedralization: no tet holds point " + std::to_string(order_[p]));
   }
 
   bool in_conflict(uint32_t t, const double* x) const {
@@ -169,28 +187,27 @@ class Builder {
       const uint32_t* v = tet(t0);
       for (int k = 0; k < 4; ++k)
         if (std::equal(pt(v[k]), pt(v[k]) + 3, x))
-          throw InternalError("Delaunay tetrahedralization: points " + std::to_string(v[k]) + " and " +
-                              std::to_string(p) + " coincide at " + point_text(x));
-      throw InternalError("Delaunay tetrahedralization: the tet holding point " + std::to_string(p) +
+          throw InternalError("Delaunay tetrahedralization: points " + std::to_string(order_[v[k]]) + " and " +
+                              std::to_string(order_[p]) + " coincide at " + point_text(x));
+      throw InternalError("Delaunay tetrahedralization: the tet holding point " + std::to_string(order_[p]) +
                           " is not in conflict with it");
     }
     ++epoch_;
     cavity_.assign(1, t0);
-    mark_[t0] = epoch_;
-    conflict_[t0] = 1;
+    state_[t0] = kInCavity;
     boundary_.clear();
     for (size_t c = 0; c < cavity_.size(); ++c) {
       const uint32_t u = cavity_[c];
       for (int i = 0; i < 4; ++i) {
-        const uint32_t across = nb_[4 * size_t{u} + i];
+        const uint32_t across = neighbour(u, i);
         if (across != kNoNeighbour) {
           const uint32_t w = across / 4;
-          if (mark_[w] != epoch_) {
-            mark_[w] = epoch_;
-            conflict_[w] = in_conflict(w, x);
-            if (conflict_[w]) cavity_.push_back(w);
+          if (state_[w] == kUnseen) {
+            const bool conflict = in_conflict(w, x);
+            state_[w] = conflict ? kInCavity : kOutside;
+            if (conflict) cavity_.push_back(w);
           }
-          if (conflict_[w]) continue;
+          if (state_[w] == kInCavity) continue;
         }
         BoundaryFace f;
         std::copy(tet(u), tet(u) + 4, f.v);
@@ -202,25 +219,66 @@ class Builder {
     out_.cavity_tets += cavity_.size();
     for (uint32_t u : cavity_) {
       tv_[4 * size_t{u}] = kDead;
+      state_[u] = kUnseen;
       free_.push_back(u);
     }
-    prepare_edges(boundary_.size() * 3 / 2);
-    uint32_t made = 0;
+    for (const BoundaryFace& f : boundary_)
+      if (f.outside != kNoNeighbour) state_[f.outside / 4] = kUnseen;
+    return make_tets(p);
+  }
+
+  // The cavity's new tets, the point coned to each boundary face, linked to
+  // the tets outside and to each other. New tet T (p at index i) meets the
+  // new tet across its face j at the edge (v[k], v[l]), (i, j, k, l) an
+  // even permutation: T's positive orientation gives that edge one
+  // direction and the other tet's the opposite one, so each side face is
+  // found as its directed edge's reverse in a table over the boundary's
+  // vertices numbered locally (a hash of the edges when they are many).
+  uint32_t make_tets(uint32_t p) {
+    uint32_t nv = 0;
+    for (const BoundaryFace& f : boundary_)
+      for (int k = 0; k < 4; ++k)
+        if (k != f.i && local(f.v[k]) == kNoLocal) {
+          local(f.v[k]) = nv++;
+          touched_.push_back(f.v[k]);
+        }
+    out_.largest_boundary = std::max<size_t>(out_.largest_boundary, nv);
+    const bool direct = nv <= kDirectVertices;
+    if (direct) {
+      if (table_.size() < size_t{nv} * nv) table_.resize(size_t{nv} * nv);
+    } else {
+      prepare_edges(boundary_.size() * 3 / 2);
+    }
+    made_.clear();
     for (const BoundaryFace& f : boundary_) {
       uint32_t v[4] = {f.v[0], f.v[1], f.v[2], f.v[3]};
       v[f.i] = p;
-      made = new_tet(v[0], v[1], v[2], v[3]);
-      nb_[4 * size_t{made} + f.i] = f.outside;
-      if (f.outside != kNoNeighbour) nb_[f.outside] = 4 * made + f.i;
+      const uint32_t made = new_tet(v[0], v[1], v[2], v[3]);
+      made_.push_back(made);
+      neighbour(made, f.i) = f.outside;
+      if (f.outside != kNoNeighbour) neighbour(f.outside) = 4 * made + f.i;
       for (int j = 0; j < 4; ++j) {
         if (j == f.i) continue;
-        uint32_t e[2], m = 0;
-        for (int k = 0; k < 4; ++k)
-          if (k != j && k != f.i) e[m++] = f.v[k];
-        link_edge(std::min(e[0], e[1]), std::max(e[0], e[1]), 4 * made + j);
+        const uint32_t a = f.v[kEvenRest[f.i][j][0]], b = f.v[kEvenRest[f.i][j][1]];
+        if (direct)
+          table_[size_t{local(a)} * nv + local(b)] = 4 * made + j;
+        else
+          link_edge(std::min(a, b), std::max(a, b), 4 * made + j);
       }
     }
-    return made;
+    if (direct) {
+      for (size_t b = 0; b < boundary_.size(); ++b) {
+        const BoundaryFace& f = boundary_[b];
+        for (int j = 0; j < 4; ++j) {
+          if (j == f.i) continue;
+          const uint32_t u = f.v[kEvenRest[f.i][j][0]], w = f.v[kEvenRest[f.i][j][1]];
+          neighbour(4 * made_[b] + j) = table_[size_t{local(w)} * nv + local(u)];
+        }
+      }
+    }
+    for (uint32_t v : touched_) local(v) = kNoLocal;
+    touched_.clear();
+    return made_.back();
   }
 
   void link_edge(uint32_t a, uint32_t b, uint32_t face) {
@@ -233,8 +291,8 @@ class Builder {
         return;
       }
       if (edge_key_[s] == key) {
-        nb_[face] = edge_face_[s];
-        nb_[edge_face_[s]] = face;
+        neighbour(face) = edge_face_[s];
+        neighbour(edge_face_[s]) = face;
         return;
       }
     }
@@ -259,13 +317,13 @@ class Builder {
     uint32_t count = 0;
     for (size_t t = 0; t < slots; ++t)
       if (tv_[4 * t] != kDead) index[t] = count++;
-    std::vector<uint32_t>().swap(mark_);
-    std::vector<uint8_t>().swap(conflict_);
+    std::vector<uint8_t>().swap(state_);
     std::vector<uint32_t>().swap(free_);
     for (size_t t = 0; t < slots; ++t) {
       if (index[t] == kDead) continue;
       for (int k = 0; k < 4; ++k) {
-        tv_[4 * size_t{index[t]} + k] = tv_[4 * t + k];
+        const uint32_t v = tv_[4 * t + k];
+        tv_[4 * size_t{index[t]} + k] = v < n_ ? order_[v] : v;
         const uint32_t across = nb_[4 * t + k];
         nb_[4 * size_t{index[t]} + k] = across == kNoNeighbour ? kNoNeighbour : 4 * index[across / 4] + across % 4;
       }
@@ -278,14 +336,29 @@ class Builder {
 
   size_t n_;
   std::vector<uint32_t> order_;
+  // A point in insertion order (then the enclosing tet's corners), with its
+  // number on the current cavity's boundary (kNoLocal when not on it) in the
+  // same cache line as its coordinates, which the cavity's tests have read.
+  struct alignas(32) Point {
+    double xyz[3];
+    uint32_t local = UINT32_MAX;
+  };
+  std::vector<Point> points_;
   DelaunayTets out_;
   std::vector<uint32_t> tv_, nb_, free_;
-  std::vector<uint32_t> mark_;
-  std::vector<uint8_t> conflict_;
+  // Per tet during an insertion: not yet tested, in the cavity, or tested
+  // and outside it; back to kUnseen when the insertion ends.
+  enum : uint8_t { kUnseen, kInCavity, kOutside };
+  std::vector<uint8_t> state_;
   uint32_t epoch_ = 0;
   int rotate_ = 0;
   std::vector<uint32_t> cavity_;
   std::vector<BoundaryFace> boundary_;
+  static constexpr uint32_t kNoLocal = UINT32_MAX;
+  static constexpr uint32_t kDirectVertices = 256;
+  std::vector<uint32_t> touched_;  // the vertices numbered
+  std::vector<uint32_t> table_;    // directed edge (local a, local b) -> the new tet's face on it
+  std::vector<uint32_t> made_;     // the new tet on each boundary face
   std::vector<uint64_t> edge_key_;
   std::vector<uint32_t> edge_face_, edge_epoch_;
   size_t edge_mask_ = 0;
@@ -293,6 +366,6 @@ class Builder {
 
 }  // namespace
 
-DelaunayTets delaunay_tetrahedralize(const std::vector<double>& xyz) { return Builder(xyz).run(); }
+DelaunayTets delaunay_tetrahedralize(const std::vector<double>& xyz) { return Builder(xyz).run(xyz); }
 
 }  // namespace partet

@@ -22,7 +22,10 @@
 // new tet (the point coned to a boundary face) is positively oriented, no
 // tet is flat, and the result is a Delaunay tetrahedralization (one of
 // them when points are cospherical: the one this insertion order gives).
-// Deterministic: fixed order, fixed tie-breaking.
+// The new tets are linked to each other through their directed edges in a
+// table over the cavity boundary's vertices (delaunay.cpp, make_tets); the
+// builder keeps the points in insertion order, so the points of nearby tets
+// sit close in memory. Deterministic: fixed order, fixed tie-breaking.
 //
 // Output: the input points' tets and the enclosing tet's (those using one
 // of its corners, vertex indices n .. n+3), compacted, with adjacency.
@@ -47,6 +50,7 @@ struct DelaunayTets {
   std::vector<uint32_t> neighbours;
   size_t walk_steps = 0;      // tets visited by the point locations
   size_t cavity_tets = 0;     // tets replaced by the insertions
+  size_t largest_boundary = 0;  // vertices on the boundary of the largest cavity
 
   size_t num_tets() const { return tets.size() / 4; }
   bool finite(size_t t) const {
